@@ -60,20 +60,20 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
     auto contact = [R](const FastStep &f) {
         return ((static_cast<std::uint32_t>(R[f.word]) ^ f.flip) & f.mask) != 0;
     };
-    auto write = [W, forced](const FastStep &f, bool on) {
+    auto write = [&](const FastStep &f, bool on) {
         if constexpr (Forced)
             if (forced[f.word] & f.mask)
                 return;
         writeBit(W[f.word], f.mask, on);
     };
     // put() and storeWord() without the look at the forces when nothing is forced.
-    auto putBit = [W, forced](const BitRef &b, bool on) {
+    auto putBit = [&](const BitRef &b, bool on) {
         if constexpr (Forced)
             if (forced[b.word] & b.mask)
                 return;
         writeBit(W[b.word], b.mask, on);
     };
-    auto storeAt = [this, R](std::int32_t index, std::int64_t value, int width) {
+    auto storeAt = [&](std::int32_t index, std::int64_t value, int width) {
         if constexpr (Forced)
             storeWord(static_cast<std::size_t>(index), value, width);
         else

@@ -4,7 +4,7 @@
 <context>
     <name>rung::app::CompareWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/compare_window.cpp" line="+198" />
+        <location filename="../app/gui/compare_window.cpp" line="+198"/>
         <source>%n rung(s) differ.</source>
         <translation>
             <numerusform>%n rung differs.</numerusform>
@@ -12,7 +12,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+7" />
+        <location line="+7"/>
         <source>%n difference(s) besides the rungs (symbols, set values, watch lists): see the Report.</source>
         <translation>
             <numerusform>%n difference besides the rungs (symbols, set values, watch lists): see the Report.</numerusform>
@@ -23,7 +23,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+211" />
+        <location filename="../app/gui/main_window.cpp" line="+211"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -31,7 +31,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
+        <location line="+1"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n step</numerusform>
@@ -39,7 +39,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_tools.cpp" line="+124" />
+        <location filename="../app/gui/main_window_tools.cpp" line="+124"/>
         <source>Paste %n rungs</source>
         <translation>
             <numerusform>Paste %n rung</numerusform>
@@ -47,7 +47,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+45" />
+        <location line="+45"/>
         <source>%n place(s) changed</source>
         <translation>
             <numerusform>%n place changed</numerusform>
@@ -55,7 +55,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+49" />
+        <location line="+49"/>
         <source>%n row(s) of the symbol table name no device of this PLC and are left out of the file: %1. Export the other symbols?</source>
         <translation>
             <numerusform>%n row of the symbol table names no device of this PLC and is left out of the file: %1. Export the other symbols?</numerusform>
@@ -66,7 +66,7 @@
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message numerus="yes">
-        <location filename="../app/gui/network_traffic_view.cpp" line="+258" />
+        <location filename="../app/gui/network_traffic_view.cpp" line="+258"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>
@@ -77,7 +77,7 @@
 <context>
     <name>rung::app::NetworkWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/network_window.cpp" line="+769" />
+        <location filename="../app/gui/network_window.cpp" line="+809"/>
         <source>%1, %2, %n station(s)</source>
         <extracomment>%1 run state, %2 virtual time, %3 number of stations</extracomment>
         <translation>
@@ -89,7 +89,7 @@
 <context>
     <name>rung::app::PlcopenImportDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/plcopen_exchange.cpp" line="+215" />
+        <location filename="../app/gui/plcopen_exchange.cpp" line="+215"/>
         <source>Everything in the file is imported: %n rung(s).</source>
         <translation>
             <numerusform>Everything in the file is imported: %n rung.</numerusform>
@@ -97,7 +97,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+3" />
+        <location line="+3"/>
         <source>%n item(s) of the file are not imported; %1 variable(s) have no device yet.</source>
         <translation>
             <numerusform>%n item of the file is not imported; %1 variable(s) have no device yet.</numerusform>
@@ -108,7 +108,7 @@
 <context>
     <name>rung::app::SimulationController</name>
     <message numerus="yes">
-        <location filename="../app/gui/simulation_controller.cpp" line="+101" />
+        <location filename="../app/gui/simulation_controller.cpp" line="+101"/>
         <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
         <translation>
             <numerusform>The program has %n error: the simulation does not start; the Problems list shows it</numerusform>
@@ -119,7 +119,7 @@
 <context>
     <name>rung::app::TestsPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/tests_panel.cpp" line="+343" />
+        <location filename="../app/gui/tests_panel.cpp" line="+343"/>
         <source>passed: %n expectation(s)</source>
         <translation>
             <numerusform>passed: %n expectation</numerusform>
@@ -127,7 +127,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+5" />
+        <location line="+5"/>
         <source>FAILED: %n expectation(s)</source>
         <translation>
             <numerusform>FAILED: %n expectation</numerusform>
@@ -138,7 +138,7 @@
 <context>
     <name>rung::editor::Document</name>
     <message numerus="yes">
-        <location filename="../editor/document.cpp" line="+155" />
+        <location filename="../editor/document.cpp" line="+155"/>
         <source>Delete %n rungs</source>
         <translation>
             <numerusform>Delete %n rung</numerusform>
@@ -149,7 +149,7 @@
 <context>
     <name>rung::editor::TimingChart</name>
     <message numerus="yes">
-        <location filename="../editor/timing_chart.cpp" line="+415" />
+        <location filename="../editor/timing_chart.cpp" line="+415"/>
         <source>B − A: %1 (%n scan(s))</source>
         <extracomment>the time between the cursors, and how many scans that is</extracomment>
         <translation>
@@ -161,7 +161,7 @@
 <context>
     <name>rung::model::Checks</name>
     <message numerus="yes">
-        <location filename="../model/checks/checks_blocks_and_stack.cpp" line="+147" />
+        <location filename="../model/checks/checks_blocks_and_stack.cpp" line="+147"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Stacked %1: %n block is open; an OR chain needs less stack</numerusform>
@@ -169,7 +169,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+98" />
+        <location line="+98"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS left without MPP at the end of the rung</numerusform>
@@ -180,7 +180,7 @@
 <context>
     <name>rung::model::Convert</name>
     <message numerus="yes">
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+310" />
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+310"/>
         <source>%1 needs two blocks, but %n is open</source>
         <translation>
             <numerusform>%1 needs two blocks, but %n is open</numerusform>
@@ -188,7 +188,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+19" />
+        <location line="+19"/>
         <source>MPS needs exactly one open block, but %n is open</source>
         <translation>
             <numerusform>MPS needs exactly one open block, but %n is open</numerusform>
@@ -196,7 +196,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+100" />
+        <location line="+100"/>
         <source>The rung starting on line %1 leaves %n MPS without MPP</source>
         <translation>
             <numerusform>The rung starting on line %1 leaves %n MPS without MPP</numerusform>
@@ -207,7 +207,7 @@
 <context>
     <name>rung::model::InstructionList</name>
     <message numerus="yes">
-        <location filename="../model/listing/il_parse.cpp" line="+445" />
+        <location filename="../model/listing/il_parse.cpp" line="+506"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 needs %n operand: %2</numerusform>
@@ -215,18 +215,18 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+10" />
-        <source>Unexpected '%1': %2 takes %n operand(s)</source>
+        <location line="+10"/>
+        <source>Unexpected &apos;%1&apos;: %2 takes %n operand(s)</source>
         <translation>
-            <numerusform>Unexpected '%1': %2 takes %n operand</numerusform>
-            <numerusform>Unexpected '%1': %2 takes %n operands</numerusform>
+            <numerusform>Unexpected &apos;%1&apos;: %2 takes %n operand</numerusform>
+            <numerusform>Unexpected &apos;%1&apos;: %2 takes %n operands</numerusform>
         </translation>
     </message>
 </context>
 <context>
     <name>rung::network::TrafficDecode</name>
     <message numerus="yes">
-        <location filename="../network/traffic_decode.cpp" line="+143" />
+        <location filename="../network/traffic_decode.cpp" line="+143"/>
         <source>the frame stops after %n byte(s): cut short or not a frame</source>
         <translation>
             <numerusform>the frame stops after %n byte: cut short or not a frame</numerusform>
@@ -234,7 +234,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+5" />
+        <location line="+5"/>
         <source>%n byte(s) after the end of the frame</source>
         <translation>
             <numerusform>%n byte after the end of the frame</numerusform>
