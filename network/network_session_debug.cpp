@@ -173,7 +173,10 @@ bool NetworkSession::runSlice(Network &network, qint64 until) {
     }
     if (reached)
         return true;
-    // A breakpoint holds, or a trigger stopped the network after its scan.
+    // A breakpoint holds, or a trigger stopped the network after its scan. The snapshots go
+    // first: a reader told "Paused" finds the held scan in them (ThreadSanitizer's slower
+    // worker let a test read the station before they came).
+    publish(network, false);
     pauseFromWorker(held ? held->name() : QString(),
                     held ? held->engine().pausePosition()->breakpoint : -1);
     return false;
@@ -194,9 +197,11 @@ void NetworkSession::doDebugWork(Network &network, const DebugWork &work) {
             station->setHoldAtNextScan(false);
             Station *now = network.holdingStation();
             stopped = now != station;
-            if (stopped)
+            if (stopped) {
+                publish(network, false); // before "Paused", as in runSlice
                 pauseFromWorker(now ? now->name() : QString(),
                                 now ? now->engine().pausePosition()->breakpoint : -1);
+            }
             afterSlice(network);
         }
     } else if (work.finish) {
