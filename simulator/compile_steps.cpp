@@ -337,6 +337,34 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
                 CompilerTr::tr("the block of %1 words runs past the end of its area").arg(s.count));
         break;
     }
+    case ApplyFunction::MoveText: {
+        // MOVTXT D n "TEXT" (PL110 manual 4.2.10): the characters' codes, one or two a word
+        // high byte first (model::textWords), from D on; the check holds them to D's area.
+        s.code = Code::MoveConstants;
+        s.dest = destOf(ins, 0, false, &s.width);
+        const model::Operand *n = operand(ins, 1);
+        const model::Operand *text = operand(ins, 2);
+        if (!n || !text || m_failed || m_muted)
+            break;
+        if (s.dest < 0) {
+            error(ins, CompilerTr::tr("%1 is not a word the text can be stored from")
+                           .arg(describe(ins.operands[0])));
+            break;
+        }
+        const std::vector<std::int32_t> words =
+            model::textWords(text->text, static_cast<int>(n->constant.value));
+        s.slot = static_cast<int>(m_program->constants.size());
+        s.count = static_cast<int>(words.size());
+        m_program->constants.insert(m_program->constants.end(), words.begin(), words.end());
+        if (s.count > 0) {
+            const int last = m_layout->word(
+                model::offsetAddress(m_target, ins.operands[0].address, s.count - 1));
+            if (last < 0 || last != s.dest + s.count - 1)
+                error(ins, CompilerTr::tr("the text does not fit in the area of %1 from there on")
+                               .arg(describe(ins.operands[0])));
+        }
+        break;
+    }
     case ApplyFunction::IndirectMove: {
         // MOVIND S D INDEX: the area from D on is a vector; element INDEX (0-based) := S.
         s.code = Code::IndirectMove;

@@ -505,6 +505,11 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
         case Code::Communicate:
             communicate(s, i, acc); // engine_comm.cpp: every scan, ON or OFF
             break;
+        case Code::MoveConstants:
+            if (acc)
+                for (int k = 0; k < s.count; ++k)
+                    store(s.dest + k, p.constants[static_cast<std::size_t>(s.slot + k)], s.width);
+            break;
         case Code::IndirectMove:
             if (acc)
                 indirectMove(s, i, pass);

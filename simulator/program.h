@@ -88,6 +88,8 @@ enum class Code : std::uint8_t {
     // Program::comms index (slot is TOP's edge); FROM / TO of a digit group: the word in dest
     // / x; engine_comm.cpp. Runs every scan, ON or OFF.
     Communicate,
+    // PL110 MOVTXT (4.2.10): count words from Program::constants[slot] into dest and on.
+    MoveConstants,
     // Omron CPM1 (W353), with the arithmetic flags (Program::flags): op = ArithOp; engine_cpm1.cpp
     Arithmetic,
     ShiftRegister, // SFT(10): data, shift pulse (edge slot), reset; dest = St, count = words
@@ -450,6 +452,8 @@ struct Program {
     std::vector<std::pair<int, int>> inputWordRanges;
     // Word indices a step reads from a list (DDIV's eight words).
     std::vector<std::int32_t> wordLists;
+    // Values a step writes from a list (MOVTXT's characters, Code::MoveConstants).
+    std::vector<std::int32_t> constants;
     // Communication instructions; empty: the scan's END does no communication work.
     std::vector<CommStep> comms;
     CommDevices commDevices;

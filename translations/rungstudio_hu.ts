@@ -11910,7 +11910,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+16"/>
         <location filename="../simulator/compile_steps.cpp" line="-13"/>
         <location line="+41"/>
-        <location line="+187"/>
+        <location line="+215"/>
         <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 nem írható</translation>
@@ -11999,7 +11999,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-374"/>
+        <location filename="../simulator/compile_steps.cpp" line="-402"/>
         <source>more than %1 open blocks</source>
         <translation>több mint %1 nyitott blokk</translation>
     </message>
@@ -12024,7 +12024,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem érvényes szószám</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="+29"/>
+        <source>%1 is not a word the text can be stored from</source>
+        <translation>%1 nem olyan szó, amelytől kezdve a szöveg tárolható</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the text does not fit in the area of %1 from there on</source>
+        <translation>a szöveg nem fér el %1 területén ettől a helytől kezdve</translation>
+    </message>
+    <message>
+        <location line="-71"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
         <translation>%1 egy bitet igényel: bit típusú operandust, vagy egy szót és egy 0..15 bitszámot</translation>
     </message>

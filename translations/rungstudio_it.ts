@@ -11935,7 +11935,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+16"/>
         <location filename="../simulator/compile_steps.cpp" line="-13"/>
         <location line="+41"/>
-        <location line="+187"/>
+        <location line="+215"/>
         <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 non può essere scritto</translation>
@@ -12024,7 +12024,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-374"/>
+        <location filename="../simulator/compile_steps.cpp" line="-402"/>
         <source>more than %1 open blocks</source>
         <translation>più di %1 blocchi aperti</translation>
     </message>
@@ -12049,7 +12049,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un numero di word</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="+29"/>
+        <source>%1 is not a word the text can be stored from</source>
+        <translation>%1 non è una word da cui memorizzare il testo</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>the text does not fit in the area of %1 from there on</source>
+        <translation>il testo non entra nell'area di %1 da lì in poi</translation>
+    </message>
+    <message>
+        <location line="-71"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
         <translation>%1 richiede un bit: un operando a bit, o una word e un numero di bit 0..15</translation>
     </message>

@@ -382,6 +382,7 @@ enum class ApplyFunction : std::uint8_t {
     ModuleWrite,  // Vigor TO / TOP m1 m2 S n: S into a special module's buffer memory
     FreePortSend, // PL110 SEND port n (4.2.19): send n characters of the port's buffer
     MasterQuery,  // PL110 COM / EXP (4.2.21): one interrogation of the port's master
+    MoveText,     // PL110 MOVTXT D n "TEXT" (4.2.10): the text's characters from D
 };
 
 // Timer behaviours beyond the plain on-delay (PL110 TOFF / TONR).

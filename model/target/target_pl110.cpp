@@ -421,7 +421,7 @@ Target makePl110Target() {
     text.storedFrom = 0;
     text.charactersPerWord = 1;
     text.name = QT_TRANSLATE_NOOP("rung::model::Target", "text");
-    addBox(t, "MOVTXT", ApplyFunction::NotSimulated, {textDest, perWord, text},
+    addBox(t, "MOVTXT", ApplyFunction::MoveText, {textDest, perWord, text},
            QT_TRANSLATE_NOOP("rung::model::Target",
                              "Store a text from D: 1 or 2 characters per word, high byte first"),
            "D 1|2 \"TEXT\"");

@@ -85,22 +85,21 @@ TEST(FrontPanelView, VigorVrKnobIsWrittenAndReadBackByVrrd) {
     EXPECT_EQ(f.panel.display()->text(), QStringLiteral(" 255"));
 }
 
-// PL110 manual 2.1.16 / 5.4: the program writes its text into DISP from row 3 (DISP42; MOVTXT is
-// not simulated, so here one character a MOV) and enables user page 17 as its start page: the
-// OLED shows it. SWAP (the mouse) steps to the next page enabled; "S" (the keyboard) too.
+// PL110 manual 2.1.16 / 5.4: the program writes its text into DISP from row 3 (DISP42, the
+// manual's own MOVTXT) and enables user page 17 as its start page: the OLED shows it. SWAP (the
+// mouse) steps to the next page enabled; "S" (the keyboard) too.
 TEST(FrontPanelView, Pl110PageShowsTheProgramsTextAndSwapTurnsThePage) {
     PanelFixture f;
     f.start(rung::testing::pl110(), QStringLiteral("PL110-2A"),
             "LD SM0.1\nSBIT SMW103 0\nLD SM0.1\nMOV 17 SM104\n"
-            "LD SM0.0\nMOV 84 DISP42\nLD SM0.0\nMOV 69 DISP43\nLD SM0.0\nMOV 83 DISP44\n"
-            "LD SM0.0\nMOV 84 DISP45\nLD SM0.0\nMOV 79 DISP46\n"
+            "LD SM0.0\nMOVTXT DISP42 1 \"TESTO DISPLAY\"\n"
             "LD SM110.0\nOUT Q1\nEND\n");
     f.scan();
     f.scan();
     ASSERT_EQ(f.panel.view().page, 17);
     const QStringList rows = f.panel.display()->text().split(QLatin1Char('\n'));
     ASSERT_EQ(rows.size(), 8);
-    EXPECT_EQ(rows[2], QStringLiteral("TESTO                "));
+    EXPECT_EQ(rows[2], QStringLiteral("TESTO DISPLAY        "));
     QToolButton *swap = f.panel.key(QStringLiteral("SWAP"));
     ASSERT_NE(swap, nullptr);
     QTest::mousePress(swap, Qt::LeftButton);

@@ -584,3 +584,32 @@ TEST(Pl110Ports, FreePortSwitchedOnByTheProgramAloneKeepsTheReceiveCount) {
     s.engine->scan();
     EXPECT_EQ(s.value("SM79"), 0);
 }
+
+// PL110 manual 2.1.16: "Per scrivere "TESTO DISPLAY" nella riga 3 del display per esempio, nel
+// programma ladder sara sufficiente inserire la seguente bobina: MOVTXT (DISP42, 1 Char per
+// word) "TESTO DISPLAY"": one character a word from DISP42 while the coil's condition is ON.
+TEST(Pl110Movtxt, StoresTheManualsDisplayRowOneCharacterAWord) {
+    Pl110 s("LD I1\nMOVTXT DISP42 1 \"TESTO DISPLAY\"\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->scan();
+    EXPECT_EQ(s.value("DISP42"), 0) << "nothing stored while the condition is OFF";
+    s.engine->setBit(s.at("I1"), true);
+    s.engine->scan();
+    const QString expected = QStringLiteral("TESTO DISPLAY");
+    for (int k = 0; k < expected.size(); ++k) {
+        const QByteArray name = QStringLiteral("DISP%1").arg(42 + k).toLatin1();
+        EXPECT_EQ(s.value(name.constData()), expected[k].unicode()) << name.constData();
+    }
+    EXPECT_EQ(s.value("DISP55"), 0) << "the word after the text is untouched";
+}
+
+// 4.2.10: DUE_CARATTERI_PER_WORD, "iniziando dalla parte alta della word": "ABC" is 4142h,
+// then 43h in the high byte of the next word.
+TEST(Pl110Movtxt, TwoCharactersAWordStartAtTheHighByte) {
+    Pl110 s("LD SM0.0\nMOVTXT V10 2 \"ABC\"\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->scan();
+    EXPECT_EQ(s.value("V10"), 0x4142);
+    EXPECT_EQ(s.value("V11"), 0x4300);
+    EXPECT_EQ(s.value("V12"), 0);
+}
