@@ -1,6 +1,7 @@
 #include "debug_controller.h"
 
 #include "breakpoint_dialog.h"
+#include "keyed_action.h"
 #include "scan_debugger_view.h"
 #include "simulation_controller.h"
 #include "simulation_panel.h"
@@ -140,12 +141,7 @@ DebugController::~DebugController() = default;
 void DebugController::addActions(QMenu *menu) {
     const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
                                   auto slot) {
-        QAction *a = menu->addAction(text, this, slot);
-        a->setObjectName(QString::fromLatin1(name));
-        a->setShortcut(key);
-        a->setToolTip(QStringLiteral("%1 (%2)").arg(QString(text).remove(QLatin1Char('&')),
-                                                    key.toString(QKeySequence::NativeText)));
-        return a;
+        return addKeyedAction(menu, this, name, text, key, slot);
     };
     menu->addSeparator();
     add("simulationStepInstruction", tr("S&tep Instruction"), QKeySequence(Qt::CTRL | Qt::Key_F12),

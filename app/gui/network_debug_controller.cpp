@@ -1,6 +1,7 @@
 #include "app/gui/network_debug_controller.h"
 
 #include "app/gui/breakpoint_dialog.h"
+#include "app/gui/keyed_action.h"
 #include "app/gui/scan_debug_subject.h"
 #include "app/gui/scan_debugger_view.h"
 
@@ -266,12 +267,7 @@ void NetworkDebugController::selectStation(const QString &name) {
 void NetworkDebugController::addActions(QMenu *menu) {
     const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
                                   auto slot) {
-        QAction *a = menu->addAction(text, this, slot);
-        a->setObjectName(QString::fromLatin1(name));
-        a->setShortcut(key);
-        a->setToolTip(QStringLiteral("%1 (%2)").arg(QString(text).remove(QLatin1Char('&')),
-                                                    key.toString(QKeySequence::NativeText)));
-        return a;
+        return addKeyedAction(menu, this, name, text, key, slot);
     };
     // The main window's keys (debug_controller.h), clear of the ladder's F5..F9.
     menu->addSeparator();

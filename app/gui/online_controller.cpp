@@ -1,6 +1,7 @@
 #include "online_controller.h"
 
 #include "connection_panel.h"
+#include "keyed_action.h"
 #include "simulation_controller.h"
 
 #include "editor/document.h"
@@ -120,14 +121,7 @@ void OnlineController::addActions(QToolBar *bar, QMenu *view) {
     menu->setToolTipsVisible(true);
     const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
                                   auto slot) {
-        QAction *a = menu->addAction(text, this, slot);
-        a->setObjectName(QString::fromLatin1(name));
-        if (!key.isEmpty()) {
-            a->setShortcut(key);
-            a->setToolTip(QStringLiteral("%1 (%2)").arg(QString(text).remove(QLatin1Char('&')),
-                                                        key.toString(QKeySequence::NativeText)));
-        }
-        return a;
+        return addKeyedAction(menu, this, name, text, key, slot);
     };
     m_go = add("onlineConnect", tr("Go &Online"), QKeySequence(Qt::CTRL | Qt::Key_W), [this] {
         if (m_panel->session()) {
