@@ -564,7 +564,10 @@ void NetworkSession::workerLoop() {
             continue;
         }
         const bool reached = runSlice(*network, until);
-        if (m_bridges && m_bridges->poll(*network))
+        if (m_bridges && m_bridges->poll(*network, [this] {
+                std::lock_guard lock(m_mutex);
+                return m_reset;
+            }))
             postBridgeStatus(m_bridges->statuses());
         afterSlice(*network);
         // A station held inside its scan has a half-scanned image: the past is recorded when

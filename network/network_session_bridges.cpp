@@ -126,14 +126,19 @@ const std::vector<BridgeStatus> &SessionBridges::attach(Network &network) {
         m_live.push_back({i, endpoint, std::move(transport), key});
     }
     m_lines->keepOnly(used);
+    std::erase_if(m_held, [&](const auto &held) {
+        return std::find(used.begin(), used.end(), held.first) == used.end();
+    });
     return m_status;
 }
 
-bool SessionBridges::poll(Network &network) {
+bool SessionBridges::poll(Network &network, const std::function<bool()> &rebuilding) {
     bool changed = false;
-    for (auto it = m_live.begin(); it != m_live.end();) {
-        BridgeStatus &s = m_status[it->index];
-        QString failure = it->endpoint->failure();
+    std::vector<QByteArray> got(m_live.size());
+    for (std::size_t i = 0; i < m_live.size(); ++i) {
+        Live &live = m_live[i];
+        BridgeStatus &s = m_status[live.index];
+        QString failure = live.endpoint->failure();
         if (failure.isEmpty()) {
             // Whatever is there now. A pseudo-terminal or a serial port is polled without a
             // wait; a TCP socket of a thread without an event loop takes in what came (and a
@@ -143,28 +148,56 @@ bool SessionBridges::poll(Network &network) {
                 kind == BridgeDescription::Kind::Tcp || kind == BridgeDescription::Kind::Listen ? 1
                                                                                                 : 0;
             for (int reads = 0; reads < 16; ++reads) {
-                const comms::ReadResult r = it->line->read(QDeadlineTimer(reads == 0 ? waitMs : 0));
+                const comms::ReadResult r =
+                    live.line->read(QDeadlineTimer(reads == 0 ? waitMs : 0));
                 if (r.status == comms::ReadResult::Status::Data)
-                    network.transmit(it->endpoint, r.bytes);
+                    got[i] += r.bytes;
                 else if (r.status == comms::ReadResult::Status::Failed)
                     failure = r.message;
                 if (r.status != comms::ReadResult::Status::Data)
                     break;
             }
         }
-        if (failure.isEmpty()) {
-            ++it;
+        if (failure.isEmpty())
             continue;
-        }
         //: %1 the bridged port ("s5/CP2"), %2 what happened to its line
         s.error = NetworkSessionTr::tr("%1: the bridge's line failed: %2 (Stop opens it again)")
                       .arg(s.bridge.end, failure);
         s.open = false;
-        m_lines->drop(it->key);
-        it = m_live.erase(it);
+        m_lines->drop(live.key);
+        m_held.erase(live.key);
+        live.endpoint = nullptr; // gone below, with what it brought
         changed = true;
     }
+    // Asked after the reads: bytes read once a Stop was asked for belong to the new network.
+    const bool hold = rebuilding && rebuilding();
+    for (std::size_t i = 0; i < m_live.size(); ++i) {
+        const Live &live = m_live[i];
+        if (!live.endpoint)
+            continue;
+        const auto held = m_held.find(live.key);
+        if (hold) {
+            if (!got[i].isEmpty())
+                m_held[live.key] += got[i];
+            continue;
+        }
+        QByteArray bytes = std::move(got[i]);
+        if (held != m_held.end()) {
+            bytes.prepend(held->second);
+            m_held.erase(held);
+        }
+        if (!bytes.isEmpty())
+            network.transmit(live.endpoint, bytes);
+    }
+    std::erase_if(m_live, [](const Live &l) { return l.endpoint == nullptr; });
     return changed;
+}
+
+std::size_t SessionBridges::heldBytes() const {
+    std::size_t n = 0;
+    for (const auto &[key, bytes] : m_held)
+        n += std::size_t(bytes.size());
+    return n;
 }
 
 } // namespace rung::network

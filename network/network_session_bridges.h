@@ -16,6 +16,8 @@
 
 #include <QString>
 
+#include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -86,9 +88,14 @@ public:
     // after Stop gets the same lines); the statuses after it.
     const std::vector<BridgeStatus> &attach(Network &network);
     // What the lines brought goes on the wires now, as the bridged station's peer sent it;
-    // true when a status changed (a line failed).
-    bool poll(Network &network);
+    // true when a status changed (a line failed). `rebuilding` is asked after the lines are
+    // read: while it says a new network is coming (Stop), what they brought waits for it, so
+    // that a master's request sent after Stop and Run is answered by the new network rather
+    // than lost with the old one.
+    bool poll(Network &network, const std::function<bool()> &rebuilding = {});
     const std::vector<BridgeStatus> &statuses() const { return m_status; }
+    // Bytes read and waiting for the network that comes after a Stop (tests).
+    std::size_t heldBytes() const;
 
 private:
     struct Live {
@@ -100,6 +107,7 @@ private:
     std::shared_ptr<BridgeLines> m_lines;
     std::vector<BridgeStatus> m_status;
     std::vector<Live> m_live;
+    std::map<QString, QByteArray> m_held; // by line key: read while a new network was coming
 };
 
 } // namespace rung::network
