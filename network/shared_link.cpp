@@ -24,7 +24,40 @@ struct Share {
     std::vector<std::int32_t> words;
     std::vector<int> widths;
     std::vector<model::BitRef> bits;
+    // What copy() copies: runs of consecutive words of one width, and the bits by image word.
+    struct WordRun {
+        std::size_t first = 0;
+        std::size_t count = 0;
+        int width = 16;
+    };
+    std::vector<WordRun> wordRuns;
+    std::vector<std::pair<std::size_t, std::uint32_t>> bitWords; // image word, mask
 };
+
+void makeRuns(Share &share) {
+    for (std::size_t k = 0; k < share.words.size(); ++k) {
+        if (share.words[k] < 0)
+            continue;
+        const auto word = static_cast<std::size_t>(share.words[k]);
+        if (!share.wordRuns.empty()) {
+            Share::WordRun &last = share.wordRuns.back();
+            if (last.width == share.widths[k] && last.first + last.count == word) {
+                ++last.count;
+                continue;
+            }
+        }
+        share.wordRuns.push_back({word, 1, share.widths[k]});
+    }
+    for (const model::BitRef &b : share.bits) {
+        if (!b.valid())
+            continue;
+        const auto word = static_cast<std::size_t>(b.word);
+        if (!share.bitWords.empty() && share.bitWords.back().first == word)
+            share.bitWords.back().second |= b.mask;
+        else
+            share.bitWords.emplace_back(word, b.mask);
+    }
+}
 
 Share shareOf(const Station &s, const model::SharedMode &mode, int number) {
     Share share;
@@ -46,6 +79,7 @@ Share shareOf(const Station &s, const model::SharedMode &mode, int number) {
             }
         }
     }
+    makeRuns(share);
     return share;
 }
 
@@ -108,16 +142,11 @@ void setWord(const Member &m, SystemRole role, int k, std::int32_t value) {
 void copy(const Member &from, const Member &to) {
     const simulator::Engine &src = from.station->engine();
     simulator::Engine &dst = to.station->engine();
-    const auto &words = src.words();
     // The same devices in every station: the same indices, the target being one.
-    for (std::size_t k = 0; k < from.share.words.size(); ++k)
-        if (from.share.words[k] >= 0)
-            dst.storeImageWord(std::size_t(from.share.words[k]),
-                               words[std::size_t(from.share.words[k])], from.share.widths[k]);
-    for (const model::BitRef &b : from.share.bits)
-        if (b.valid())
-            dst.storeImageBit(
-                b, (static_cast<std::uint32_t>(words[std::size_t(b.word)]) & b.mask) != 0);
+    for (const Share::WordRun &run : from.share.wordRuns)
+        dst.copyImageWords(src, run.first, run.count, run.width);
+    for (const auto &[word, mask] : from.share.bitWords)
+        dst.copyImageBits(src, word, mask);
 }
 
 // CPU Link: station 0 polls slaves 1..n in "instant interrupt way" (B-3-4): every network

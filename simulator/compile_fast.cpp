@@ -1,6 +1,7 @@
 #include "compiler_detail.h"
 
 #include <algorithm>
+#include <optional>
 
 // Program::fast: which steps the plain scan's loop (Engine::runFast, engine_fast.cpp) runs
 // itself. A step keeps the full interpreter (Slow) when it has an operand resolved at run
@@ -86,6 +87,36 @@ FastOp fastOf(const Step &s) {
     }
 }
 
+// A timer counting up (not retentive) or a one-input counter counting up with a K set value
+// (FastOp::TimerK / CounterK): its operands and what follows from the set value; none for the
+// others, which keep FastOp::Timer / Counter.
+std::optional<FastElement> constantElement(const Program &program, const Step &s) {
+    if (s.x.index >= 0 || (s.flags & kDown) || s.slot < 0 || s.dest < 0 || !s.bit.valid())
+        return std::nullopt;
+    FastElement e;
+    e.state = static_cast<std::int32_t>(static_cast<std::size_t>(s.slot) * kElementStateBytes);
+    e.dest = s.dest;
+    // Without a word to show the set value in, the current value's word takes it first: the
+    // op writes its value after, and tests nothing.
+    e.setWord = s.y.index >= 0 ? s.y.index : s.dest;
+    e.bitWord = s.bit.word;
+    e.bitMask = s.bit.mask;
+    e.set = std::max<std::int32_t>(0, s.x.constant);
+    if (s.code == Code::Counter)
+        return (s.flags & kOneInput) && s.width == 16 ? std::optional(e) : std::nullopt;
+    if (s.op == kTimerAccumulates || s.count <= 0 || e.set > program.timerMax)
+        return std::nullopt;
+    e.base = s.count;
+    e.limitMs = std::int64_t{e.set} * s.count;
+    // The multiply-shift equals the division for every ms up to the limit (< 2^25) and a base
+    // up to 2^13: the error ms * (magic - 2^38 / base) stays below 2^38 / base >= 2^25, and
+    // ms * magic below 2^63.
+    if (e.limitMs >= (std::int64_t{1} << 25) || s.count > (1 << 13))
+        return std::nullopt;
+    e.magic = ((std::uint64_t{1} << kFastDivShift) / static_cast<std::uint64_t>(s.count)) + 1;
+    return e;
+}
+
 // Runs of fast steps that run as one (FastOp::SeriesStart2 ...): the first step's op
 // becomes the run's, the others keep theirs.
 void fuse(std::vector<FastStep> &fast) {
@@ -105,12 +136,33 @@ void fuse(std::vector<FastStep> &fast) {
         } else if (is(i, load) && is(i + 1, contactAnd) && is(i + 2, {FastOp::OrBlock})) {
             fast[i].op = FastOp::SeriesOr;
             i += 3;
+        } else if (is(i, {FastOp::LoadStart, FastOp::LoadStartNot}) &&
+                   is(i + 1, {FastOp::TimerK, FastOp::CounterK, FastOp::MoveWord16,
+                              FastOp::MoveConst16, FastOp::Out})) {
+            switch (fast[i + 1].op) {
+            case FastOp::TimerK:
+                fast[i].op = FastOp::LoadStartTimerK;
+                break;
+            case FastOp::CounterK:
+                fast[i].op = FastOp::LoadStartCounterK;
+                break;
+            case FastOp::MoveWord16:
+                fast[i].op = FastOp::LoadStartMoveWord16;
+                break;
+            case FastOp::MoveConst16:
+                fast[i].op = FastOp::LoadStartMoveConst16;
+                break;
+            default:
+                fast[i].op = FastOp::LoadStartOut;
+                break;
+            }
+            i += 2;
         } else if (is(i, contactAnd) && is(i + 1, contactAnd)) {
             fast[i].op = FastOp::SeriesAnd2;
             i += 2;
         } else if (is(i, {FastOp::Push}) && is(i + 1, contactAnd) &&
                    is(i + 2, {FastOp::Out, FastOp::OutNot}) && is(i + 3, {FastOp::Pop})) {
-            fast[i].op = FastOp::BranchOut;
+            fast[i].op = fast[i + 2].op == FastOp::Out ? FastOp::BranchOut : FastOp::BranchOutNot;
             i += 4;
         } else {
             ++i;
@@ -123,6 +175,7 @@ void fuse(std::vector<FastStep> &fast) {
 void buildFastSteps(Program &program) {
     program.fast.clear();
     program.fast.reserve(program.steps.size() + 1);
+    program.fastElements.clear();
     const bool lean = program.gates.empty(); // no timer or counter is gated
     const bool flags = program.flags.any();
     for (std::size_t i = 0; i < program.steps.size(); ++i) {
@@ -142,8 +195,16 @@ void buildFastSteps(Program &program) {
         switch (f.op) {
         case FastOp::Timer:
         case FastOp::Counter:
-            if (!lean || (s.flags & kBcd))
+            if (!lean || (s.flags & kBcd)) {
                 f.op = f.op == FastOp::Timer ? FastOp::TimerFull : FastOp::CounterFull;
+            } else if (const std::optional<FastElement> e = constantElement(program, s)) {
+                f.op = f.op == FastOp::Timer ? FastOp::TimerK : FastOp::CounterK;
+                f.word =
+                    static_cast<std::int32_t>(program.fastElements.size() * sizeof(FastElement));
+                program.fastElements.push_back(*e);
+                program.fast.push_back(f);
+                continue;
+            }
             break;
         case FastOp::Move:
             if (s.width == 16 && !flags && s.dest >= 0) {

@@ -85,11 +85,17 @@ void Engine::scan() {
     // The plain program's loop has no test for the rare steps at all (a test per step cost
     // ~10% of a scan, docs/performance.md); the fast loop runs it when the compiler made one.
     if (m_program->fast.size() == n + 1) {
+        // One loop for each: a freed register (bits written to the image itself) is worth
+        // a few instructions a step.
         const bool forced = !m_forcedWords.empty();
-        if (m_record)
-            forced ? runFast<true, true>() : runFast<true, false>();
-        else
-            forced ? runFast<false, true>() : runFast<false, false>();
+        const bool deferred = m_program->deferredBitWrites;
+        using Run = std::size_t (Engine::*)();
+        static constexpr Run runs[2][2][2] = {
+            {{&Engine::runFast<false, false, false>, &Engine::runFast<false, false, true>},
+             {&Engine::runFast<false, true, false>, &Engine::runFast<false, true, true>}},
+            {{&Engine::runFast<true, false, false>, &Engine::runFast<true, false, true>},
+             {&Engine::runFast<true, true, false>, &Engine::runFast<true, true, true>}}};
+        (this->*runs[m_record][forced][deferred])();
     } else {
         const bool special = m_program->specialSteps;
         if (m_record)
@@ -407,6 +413,24 @@ Snapshot Engine::snapshot() const {
         }
     }
     return s;
+}
+
+void Engine::copyImageWords(const Engine &from, std::size_t first, std::size_t count, int width) {
+    const std::int32_t *src = from.m_words.data() + first;
+    if (!m_forcedWords.empty()) {
+        for (std::size_t k = 0; k < count; ++k)
+            storeWord(first + k, src[k], width);
+        return;
+    }
+    std::int32_t *dst = m_words.data() + first;
+    for (std::size_t k = 0; k < count; ++k)
+        dst[k] = model::wrapToWidth(src[k], width);
+}
+
+void Engine::copyImageBits(const Engine &from, std::size_t word, std::uint32_t mask) {
+    mask &= ~m_forceMask[word];
+    auto &w = reinterpret_cast<std::uint32_t &>(m_words[word]);
+    w = (w & ~mask) | (static_cast<std::uint32_t>(from.m_words[word]) & mask);
 }
 
 } // namespace rung::simulator

@@ -158,6 +158,11 @@ public:
         storeWord(index, value, width);
     }
     void storeImageBit(const BitRef &bit, bool on) { put(m_words.data(), bit, on); }
+    // The same for a run of `count` words of one width from `from`'s image (an engine of the
+    // same layout) and for the bits of `mask` in one word: a CPU Link exchange copies a few
+    // hundred words eight times a slice, word by word the most of the network's own cost.
+    void copyImageWords(const Engine &from, std::size_t first, std::size_t count, int width);
+    void copyImageBits(const Engine &from, std::size_t word, std::uint32_t mask);
 
 private:
     void loadPresets(); // Program::presetLoads, at start and at each power cycle
@@ -169,6 +174,7 @@ private:
         std::uint8_t previous = 0;    // counters: input state at the last execution
         std::uint8_t running = 0;     // timers: input was ON at the last execution
     };
+    static_assert(sizeof(ElementState) == kElementStateBytes); // FastElement::state
 
     // The interpreter's registers, kept while a scan is stopped inside.
     struct Registers {
@@ -202,8 +208,7 @@ private:
     std::size_t runSegment(std::size_t from, std::size_t to);
     // A whole scan's steps from the first (engine_fast.cpp): Program::fast's loop, the full
     // interpreter for a Slow step. Forced: some bit is forced (without, no write looks).
-    template <bool Record, bool Forced>
-    std::size_t runFast();
+    template <bool Record, bool Forced, bool Deferred> std::size_t runFast();
     void startInsideScan();
     void completeInsideScan();
     bool breakpointHolds(std::size_t instruction);

@@ -31,16 +31,18 @@ inline bool edgeOf(std::uint8_t &prev, bool now, bool falling) {
 #pragma GCC diagnostic ignored "-Wpedantic"
 #endif
 
-template <bool Record, bool Forced> std::size_t Engine::runFast() {
+template <bool Record, bool Forced, bool Deferred> std::size_t Engine::runFast() {
     const Program &p = *m_program;
     const FastStep *fast = p.fast.data();
     const Step *steps = p.steps.data();
     const std::size_t n = p.steps.size();
     std::int32_t *R = m_words.data();
-    std::int32_t *W = p.deferredBitWrites ? m_write.data() : R;
+    std::int32_t *W = Deferred ? m_write.data() : R;
     const std::uint32_t *forced = m_forceMask.data();
     std::uint8_t *edges = m_edges.data();
     const Pass pass{p, R, W, m_stats.periodMs};
+    // A local pointer: m_flow's data read again after every byte stored cost an instruction.
+    std::uint8_t *const flow = Record ? m_flow.data() : nullptr;
     const bool flags = p.flags.any();
     // The stacks live where the full interpreter finds them when a step goes to it.
     bool *blocks = m_regs.blocks;
@@ -80,6 +82,13 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
             R[index] = wrapToWidth(value, width);
     };
     ElementState *states = m_states.data();
+    const auto *elements = reinterpret_cast<const char *>(p.fastElements.data());
+    auto elementOf = [elements](const FastStep &f) -> const FastElement & {
+        return *reinterpret_cast<const FastElement *>(elements + f.word);
+    };
+    auto stateOf = [states](const FastElement &e) -> ElementState & {
+        return *reinterpret_cast<ElementState *>(reinterpret_cast<char *>(states) + e.state);
+    };
     const std::int64_t period = m_stats.periodMs;
     const std::int64_t timerMax = p.timerMax;
     // Timers and counters whose set value is BCD or that an area gates take the full body
@@ -166,6 +175,7 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
                                             &&opParallelAnd,
                                             &&opSeriesOr,
                                             &&opBranchOut,
+                                            &&opBranchOutNot,
                                             &&opTimerFull,
                                             &&opCounterFull,
                                             &&opMoveWord16,
@@ -180,6 +190,13 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
                                             &&opInterlockClear,
                                             &&opSetStep,
                                             &&opJump,
+                                            &&opTimerK,
+                                            &&opCounterK,
+                                            &&opLoadStartTimerK,
+                                            &&opLoadStartCounterK,
+                                            &&opLoadStartMoveWord16,
+                                            &&opLoadStartMoveConst16,
+                                            &&opLoadStartOut,
                                             &&opStop};
     static_assert(std::size(table) == static_cast<std::size_t>(FastOp::Stop) + 1);
     const FastStep *f = fast;
@@ -187,7 +204,7 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
 #define RUNG_NEXT()                                                                                \
     do {                                                                                           \
         if constexpr (Record)                                                                      \
-            m_flow[at()] = acc;                                                                    \
+            flow[at()] = acc;                                                                      \
         ++f;                                                                                       \
         goto *table[static_cast<std::size_t>(f->op)];                                              \
     } while (false)
@@ -365,7 +382,7 @@ opSeriesStart2 : {
     bsp = 0;
     psp = 0;
     if constexpr (Record)
-        m_flow[at()] = a;
+        flow[at()] = a;
     acc = a & contact(f[1]);
     ++f;
     RUNG_NEXT();
@@ -373,7 +390,7 @@ opSeriesStart2 : {
 opSeriesAnd2:
     acc = acc & contact(f[0]);
     if constexpr (Record)
-        m_flow[at()] = acc;
+        flow[at()] = acc;
     acc = acc & contact(f[1]);
     ++f;
     RUNG_NEXT();
@@ -384,8 +401,8 @@ opParallelAnd : {
     const bool a = contact(f[0]) & gate;
     const bool branch = a | (contact(f[1]) & gate);
     if constexpr (Record) {
-        m_flow[at()] = a;
-        m_flow[at() + 1] = branch;
+        flow[at()] = a;
+        flow[at() + 1] = branch;
     }
     acc = acc & branch;
     f += 2;
@@ -397,26 +414,33 @@ opSeriesOr : {
     const bool a = contact(f[0]) & gate;
     const bool series = a & contact(f[1]);
     if constexpr (Record) {
-        m_flow[at()] = a;
-        m_flow[at() + 1] = series;
+        flow[at()] = a;
+        flow[at() + 1] = series;
     }
     acc = acc | series;
     f += 2;
     RUNG_NEXT();
 }
-opBranchOut : {
-    if (psp >= kPushStack) [[unlikely]]
-        goto *table[static_cast<std::size_t>(FastOp::Push)];
-    const bool on = acc & contact(f[1]);
-    if constexpr (Record) {
-        m_flow[at()] = acc;
-        m_flow[at() + 1] = on;
-        m_flow[at() + 2] = on;
-    }
-    write(f[2], on != (f[2].flip != 0)); // the coil's value; MPP gives acc back as it was
-    f += 3;
-    RUNG_NEXT();
-}
+// The coil's value; MPP gives acc back as it was.
+#define RUNG_BRANCH_OUT(negated)                                                                   \
+    do {                                                                                           \
+        if (psp >= kPushStack) [[unlikely]]                                                        \
+            goto *table[static_cast<std::size_t>(FastOp::Push)];                                   \
+        const bool on = acc & contact(f[1]);                                                       \
+        if constexpr (Record) {                                                                    \
+            flow[at()] = acc;                                                                      \
+            flow[at() + 1] = on;                                                                   \
+            flow[at() + 2] = on;                                                                   \
+        }                                                                                          \
+        write(f[2], on != (negated));                                                              \
+        f += 3;                                                                                    \
+        RUNG_NEXT();                                                                               \
+    } while (false)
+opBranchOut:
+    RUNG_BRANCH_OUT(false);
+opBranchOutNot:
+    RUNG_BRANCH_OUT(true);
+#undef RUNG_BRANCH_OUT
 opTimerFull:
     timer(stepOf(*f), at(), acc, pass);
     RUNG_NEXT();
@@ -485,9 +509,69 @@ opJump:
     if (!acc && f->word > static_cast<std::int32_t>(at()))
         f = fast + f->word;
     RUNG_NEXT();
+opTimerK : {
+    // opTimer's rules with what the K set value decides worked out by the compiler: the done
+    // bit is on once the time reached set x base; units by a multiply-shift (FastElement).
+    // A timer whose input is OFF, most of a program's timers most of the time, only clears.
+    const FastElement &e = elementOf(*f);
+    ElementState &st = stateOf(e);
+    R[e.setWord] = e.set;
+    if (!acc) {
+        st.running = 0;
+        st.accumulated = 0;
+        putBit(BitRef{e.bitWord, e.bitMask}, false);
+        R[e.dest] = 0;
+        RUNG_NEXT();
+    }
+    const std::int64_t ms =
+        st.running ? std::min<std::int64_t>(st.accumulated + period, e.limitMs) : st.accumulated;
+    st.running = 1;
+    st.accumulated = ms;
+    putBit(BitRef{e.bitWord, e.bitMask}, ms >= e.limitMs);
+    std::int64_t units = static_cast<std::int64_t>(
+        (static_cast<std::uint64_t>(std::min(ms, e.limitMs)) * e.magic) >> kFastDivShift);
+    if (ms > e.limitMs) [[unlikely]] // kept from before an online edit lowered the set value
+        units = std::min<std::int64_t>(ms / e.base, timerMax);
+    R[e.dest] = static_cast<std::int32_t>(units);
+    RUNG_NEXT();
+}
+opCounterK : {
+    const FastElement &e = elementOf(*f);
+    ElementState &st = stateOf(e);
+    R[e.setWord] = e.set;
+    if (acc && !st.previous && st.accumulated < e.set)
+        ++st.accumulated;
+    st.previous = acc;
+    putBit(BitRef{e.bitWord, e.bitMask}, st.accumulated >= e.set);
+    R[e.dest] = static_cast<std::int16_t>(static_cast<std::uint16_t>(st.accumulated));
+    RUNG_NEXT();
+}
+// The rung's first contact, then straight into the next step's code (no dispatch): it
+// is the step the compiler saw there (compile_fast.cpp, fuse).
+#define RUNG_LOAD_START_THEN(next)                                                                 \
+    do {                                                                                           \
+        bsp = 0;                                                                                   \
+        psp = 0;                                                                                   \
+        acc = contact(*f) & gate;                                                                  \
+        if constexpr (Record)                                                                      \
+            flow[at()] = acc;                                                                      \
+        ++f;                                                                                       \
+        goto next;                                                                                 \
+    } while (false)
+opLoadStartTimerK:
+    RUNG_LOAD_START_THEN(opTimerK);
+opLoadStartCounterK:
+    RUNG_LOAD_START_THEN(opCounterK);
+opLoadStartMoveWord16:
+    RUNG_LOAD_START_THEN(opMoveWord16);
+opLoadStartMoveConst16:
+    RUNG_LOAD_START_THEN(opMoveConst16);
+opLoadStartOut:
+    RUNG_LOAD_START_THEN(opOut);
+#undef RUNG_LOAD_START_THEN
 opEnd:
     if constexpr (Record)
-        m_flow[at()] = acc;
+        flow[at()] = acc;
     return n;
 opStop:
     return n;
@@ -500,9 +584,13 @@ opStop:
 #pragma GCC diagnostic pop
 #endif
 
-template std::size_t Engine::runFast<false, false>();
-template std::size_t Engine::runFast<false, true>();
-template std::size_t Engine::runFast<true, false>();
-template std::size_t Engine::runFast<true, true>();
+template std::size_t Engine::runFast<false, false, false>();
+template std::size_t Engine::runFast<false, false, true>();
+template std::size_t Engine::runFast<false, true, false>();
+template std::size_t Engine::runFast<false, true, true>();
+template std::size_t Engine::runFast<true, false, false>();
+template std::size_t Engine::runFast<true, false, true>();
+template std::size_t Engine::runFast<true, true, false>();
+template std::size_t Engine::runFast<true, true, true>();
 
 } // namespace rung::simulator

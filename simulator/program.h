@@ -271,7 +271,8 @@ enum class FastOp : std::uint8_t {
     SeriesAnd2,   // AND / ANI a, AND / ANI b
     ParallelAnd,  // LD / LDI a, OR / ORI b, ANB: a two-contact branch in series
     SeriesOr,     // LD / LDI a, AND / ANI b, ORB: a two-contact series in parallel
-    BranchOut,    // MPS, AND / ANI a, OUT / OUTN y, MPP: an output branch with a contact
+    BranchOut,    // MPS, AND / ANI a, OUT y, MPP: an output branch with a contact
+    BranchOutNot, // the same with OUTN y
     // A timer or counter with a BCD set value or on a gated element (Area::enabledBy): the
     // full body (engine_timers.h). Timer and Counter are the others.
     TimerFull,
@@ -292,6 +293,18 @@ enum class FastOp : std::uint8_t {
     InterlockClear,
     SetStep,
     Jump,
+    // A timer counting up (not retentive) and a one-input 16-bit counter counting up, each
+    // with a K set value in binary on an ungated element: word = its FastElement's byte offset in
+    // Program::fastElements, all it needs there.
+    TimerK,
+    CounterK,
+    // A rung's first contact (LD / LDI, `flip`) and the step after it, which keeps its op: a
+    // timer, a counter, a 16-bit move or a coil on one contact.
+    LoadStartTimerK,
+    LoadStartCounterK,
+    LoadStartMoveWord16,
+    LoadStartMoveConst16,
+    LoadStartOut,
     Stop, // after the last step: the list ended without END
 };
 
@@ -305,6 +318,25 @@ struct FastStep {
     // value; 0 otherwise.
     std::uint32_t flip = 0;
 };
+
+// What FastOp::TimerK / CounterK read (Program::fastElements): the Step's operands with the set
+// value and what follows from it worked out when the program is compiled.
+struct FastElement {
+    std::int32_t state = 0;    // the element's state: its byte offset in the engine's states
+    std::int32_t dest = -1;    // the current value's word
+    std::int32_t setWord = -1; // the word the set value is copied to (Step::y; else dest)
+    std::int32_t bitWord = 0;  // the done bit
+    std::uint32_t bitMask = 0;
+    std::int32_t set = 0;     // the K value, not below 0
+    std::int32_t base = 1;    // timers: the time base in ms
+    std::int64_t limitMs = 0; // timers: set * base, where the accumulated time stops
+    // Timers: accumulated ms / base as (ms * magic) >> kFastDivShift, exact while the ms stay
+    // below 2^25 (buildFastSteps keeps the others on FastOp::Timer).
+    std::uint64_t magic = 0;
+};
+inline constexpr int kFastDivShift = 38;
+// The size of the engine's state of a timer or counter (Engine::ElementState, checked there).
+inline constexpr std::size_t kElementStateBytes = 16;
 
 // A system device the engine drives at the start of every scan.
 struct SystemBinding {
@@ -401,7 +433,8 @@ struct Program {
     std::shared_ptr<const MemoryLayout> layout;
     std::vector<Step> steps;    // index = instruction index in the list
     std::vector<FastStep> fast; // one per step and a Stop (buildFastSteps, compile_fast.cpp)
-    std::vector<int> lines;     // source line of each step
+    std::vector<FastElement> fastElements; // FastOp::TimerK / CounterK
+    std::vector<int> lines;                // source line of each step
     std::vector<BitRef> bitLists;
     std::vector<ResetTarget> resets;
     std::vector<OperandRef> refs; // operands resolved at run time (kResolve)

@@ -1,6 +1,7 @@
 #include "model/image/history.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace rung::model {
 
@@ -73,6 +74,17 @@ void HistoryRecorder::rebuildWords() {
         m_wordDevices.push_back(device);
     }
     m_wordFirst.push_back(static_cast<int>(m_wordDevices.size()));
+    m_wordRuns.clear();
+    for (std::size_t j = 0; j < m_wordIndex.size(); ++j) {
+        if (!m_wordRuns.empty()) {
+            WordRun &last = m_wordRuns.back();
+            if (last.word + last.count == m_wordIndex[j]) {
+                ++last.count;
+                continue;
+            }
+        }
+        m_wordRuns.push_back({m_wordIndex[j], static_cast<int>(j), 1});
+    }
 }
 
 void HistoryRecorder::clear() {
@@ -131,17 +143,24 @@ bool HistoryRecorder::record(quint64 scan, qint64 timeMs, const std::int32_t *wo
     for (int i : m_fresh)
         push(static_cast<std::size_t>(i), read(m_devices[static_cast<std::size_t>(i)]));
     m_fresh.clear();
-    const std::size_t n = m_wordIndex.size();
-    for (std::size_t j = 0; j < n; ++j) {
-        const std::int32_t w = words[m_wordIndex[j]];
-        if (w == m_wordValue[j]) [[likely]]
+    for (const WordRun &run : m_wordRuns) {
+        const std::int32_t *now = words + run.word;
+        std::int32_t *before = m_wordValue.data() + run.first;
+        if (std::memcmp(now, before, static_cast<std::size_t>(run.count) * sizeof(std::int32_t)) ==
+            0) [[likely]]
             continue;
-        m_wordValue[j] = w;
-        for (int k = m_wordFirst[j]; k < m_wordFirst[j + 1]; ++k) {
-            const auto i = static_cast<std::size_t>(m_wordDevices[static_cast<std::size_t>(k)]);
-            const std::int32_t v = read(m_devices[i]);
-            if (v != m_last[i])
-                push(i, v);
+        for (int r = 0; r < run.count; ++r) {
+            const std::int32_t w = now[r];
+            if (w == before[r])
+                continue;
+            before[r] = w;
+            const auto j = static_cast<std::size_t>(run.first + r);
+            for (int k = m_wordFirst[j]; k < m_wordFirst[j + 1]; ++k) {
+                const auto i = static_cast<std::size_t>(m_wordDevices[static_cast<std::size_t>(k)]);
+                const std::int32_t v = read(m_devices[i]);
+                if (v != m_last[i])
+                    push(i, v);
+            }
         }
     }
     m_recorded = true;

@@ -106,6 +106,14 @@ private:
     std::vector<std::int32_t> m_wordValue; // their values at the last record
     std::vector<int> m_wordFirst;          // per distinct word: first entry in m_wordDevices
     std::vector<int> m_wordDevices;        // device indices grouped by word
+    // Runs of consecutive image words among m_wordIndex: a run unchanged since the last record
+    // is passed over with one memcmp (most of a scan's watched words do not change).
+    struct WordRun {
+        int word = 0;  // its first image word
+        int first = 0; // its first index into m_wordIndex / m_wordValue
+        int count = 0;
+    };
+    std::vector<WordRun> m_wordRuns;
     std::vector<Ring> m_rings;
     std::vector<int> m_fresh; // devices whose first value the next record() stores
     bool m_recorded = false;  // a record() since construction or clear()

@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace rung::simulator {
@@ -114,13 +115,14 @@ TEST(FastLoop, RandomProgramsOfEveryFamilyScanAsTheFullInterpreter) {
 // word arithmetic (16-bit moves and sums of words and constants, INC, DEC), a jump over a
 // rung, an interlock (Slow steps between fast ones), a one-input counter and its reset.
 TEST(FastLoop, CoilsBoxesJumpsAndInterlocksScanAsTheFullInterpreter) {
-    const char *program = "LD X0\nSET M0\nLD X1\nRST M0\nLD X2\nANI M0\nOUT Y0\n"
-                          "LD X3\nCNT C0 K3\nLD X4\nAND X5\nAND X6\nRST C0\nLD C0\nOUT Y1\n"
-                          "LD X5\nTMR T0 K2\nLD T0\nOUT Y2\nLD X6\nRST T0\n"
-                          "LD X7\nJMP K1\nLD X0\nOUT Y3\nMOV D0 D1\nJME K1\n"
-                          "LD X1\nIL\nLD X2\nORI X3\nOUT Y4\nADD D1 K7 D2\nSUB D2 K3 D3\nILC\n"
-                          "LD SM9000\nINC D4\nDEC D5\nADD D4 D5 D6\nMOV D6 D7\nLD X2\nMOV K-7 D8\nSUB D4 D5 D9\n"
-                          "LDP X3\nOR X4\nANDP X5\nOUTN Y5\nLDF X6\nINV\nOUT Y6\nEND";
+    const char *program =
+        "LD X0\nSET M0\nLD X1\nRST M0\nLD X2\nANI M0\nOUT Y0\n"
+        "LD X3\nCNT C0 K3\nLD X4\nAND X5\nAND X6\nRST C0\nLD C0\nOUT Y1\n"
+        "LD X5\nTMR T0 K2\nLD T0\nOUT Y2\nLD X6\nRST T0\n"
+        "LD X7\nJMP K1\nLD X0\nOUT Y3\nMOV D0 D1\nJME K1\n"
+        "LD X1\nIL\nLD X2\nORI X3\nOUT Y4\nADD D1 K7 D2\nSUB D2 K3 D3\nILC\n"
+        "LD SM9000\nINC D4\nDEC D5\nADD D4 D5 D6\nMOV D6 D7\nLD X2\nMOV K-7 D8\nSUB D4 D5 D9\n"
+        "LDP X3\nOR X4\nANDP X5\nOUTN Y5\nLDF X6\nINV\nOUT Y6\nEND";
     test::TableSim sim(program);
     ASSERT_TRUE(sim.result.ok()) << sim.result.diagnostics.front().message.toStdString();
     std::vector<model::Address> inputs;
@@ -160,6 +162,75 @@ TEST(FastLoop, TheBenchmarkProgramRunsInTheFastLoopAlone) {
     for (int k = 0; k < 32; ++k)
         inputs.push_back(test::operandOf(*target, QStringLiteral("X%1").arg(k)).address);
     expectSameScans(compiled.program, inputs, {}, 60, 5);
+}
+
+// The Vigor timers of every time base and the counters with a K set value run as the lean
+// FastOp::TimerK / CounterK, a rung's single contact goes straight into its timer, counter, move
+// or coil, and an output branch drives a negated coil: the same scans as the full interpreter.
+TEST(FastLoop, ConstantTimersCountersAndOneContactRungsScanAsTheFullInterpreter) {
+    const model::Target &vigor = model::Target::get(model::Family::Vigor);
+    const char *text = "LD X0\nTMR T0 K3\nLD X1\nTMR T200 K25\nLD X2\nAND X3\nTMR T250 K7\n"
+                       "LDI X4\nCNT C0 K4\nLD X5\nRST C0\nLD X6\nCNT C1 K0\n"
+                       "LD X7\nMOV D0 D1\nLD X0\nMOV K123 D2\nLD X1\nOUT Y0\n"
+                       "LD T0\nOR T200\nOUT Y3\nLD C0\nOUT Y4\nLD M9000\nINC D0\nEND\n";
+    const model::ParseResult parsed = model::parseInstructionList(vigor, QString::fromLatin1(text));
+    ASSERT_TRUE(parsed.ok()) << parsed.errors.front().message.toStdString();
+    const CompileResult compiled = compileProgram(parsed.list);
+    ASSERT_TRUE(compiled.ok()) << compiled.diagnostics.front().message.toStdString();
+    std::vector<FastOp> ops;
+    for (const FastStep &f : compiled.program->fast)
+        ops.push_back(f.op);
+    for (const FastOp op :
+         {FastOp::TimerK, FastOp::CounterK, FastOp::LoadStartTimerK, FastOp::LoadStartCounterK,
+          FastOp::LoadStartMoveWord16, FastOp::LoadStartMoveConst16, FastOp::LoadStartOut})
+        EXPECT_NE(std::find(ops.begin(), ops.end(), op), ops.end()) << int(op);
+    std::vector<model::Address> written;
+    const auto inputs = inputsOf(vigor, parsed.list, &written);
+    expectSameScans(compiled.program, inputs, written, 600, 17, 3);
+
+    // An output branch into a negated coil (OUTN, a family that has it).
+    test::TableSim sim("LD X0\nMPS\nAND X1\nOUTN Y1\nMPP\nOUT Y2\nLD X2\nMPS\nANI X3\nOUT Y3\n"
+                       "MPP\nOUTN Y4\nEND");
+    ASSERT_TRUE(sim.result.ok());
+    EXPECT_EQ(sim.result.program->fast[1].op, FastOp::BranchOutNot);
+    EXPECT_EQ(sim.result.program->fast[7].op, FastOp::BranchOut);
+    std::vector<model::Address> in;
+    for (const char *x : {"X0", "X1", "X2", "X3"})
+        in.push_back(sim.at(x));
+    expectSameScans(sim.result.program, in, {sim.at("Y1"), sim.at("Y3")}, 200, 19, 2);
+}
+
+// An online edit lowers a running timer's K below the time it has counted: the lean timer stops
+// at the new limit and is done at once, as the full one, scan after scan, and clears when its
+// input goes OFF.
+TEST(FastLoop, ATimerWhoseSetValueWasLoweredOnlineScansAsTheFullInterpreter) {
+    test::TableSim sim("LD X0\nTMR T0 K50\nLD T0\nOUT Y0\nEND");
+    ASSERT_TRUE(sim.result.ok());
+    const std::shared_ptr<const Program> before = sim.result.program;
+    ASSERT_TRUE(sim.compile("LD X0\nTMR T0 K10\nLD T0\nOUT Y0\nEND"));
+    const std::shared_ptr<const Program> lowered = sim.result.program;
+    EXPECT_EQ(lowered->fast[0].op, FastOp::LoadStartTimerK);
+    Engine fast(before);
+    Engine stepped(before);
+    for (Engine *e : {&fast, &stepped}) {
+        e->setPeriodMs(100);
+        e->setBit(sim.at("X0"), true);
+    }
+    for (int scan = 0; scan < 30; ++scan) {
+        fast.scan();
+        stepWholeScan(stepped);
+    }
+    ASSERT_EQ(fast.value(sim.at("T0")), 29);
+    for (Engine *e : {&fast, &stepped})
+        ASSERT_EQ(e->replaceProgram(lowered), EditApplied::Now);
+    for (int scan = 0; scan < 20; ++scan) {
+        if (scan == 10)
+            for (Engine *e : {&fast, &stepped})
+                e->setBit(sim.at("X0"), false);
+        fast.scan();
+        stepWholeScan(stepped);
+        ASSERT_EQ(test::image(fast), test::image(stepped)) << "scan " << scan;
+    }
 }
 
 TEST(FastLoop, EveryExampleProjectScansAsTheFullInterpreter) {
