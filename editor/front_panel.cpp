@@ -44,6 +44,8 @@ QColor lampColour(model::LampColour colour, bool lit) {
     case model::LampColour::Orange:
         c = QColor(0xf0, 0x90, 0x20);
         break;
+    case model::LampColour::Unstated: // drawn plainly by PanelLamp::paintEvent
+        break;
     }
     return lit ? c : c.darker(300);
 }
@@ -88,7 +90,11 @@ void PanelLamp::paintEvent(QPaintEvent *) {
     const int disc = fm.height();
     const QRectF circle(2, 2, disc - 2, disc - 2);
     p.setPen(QPen(palette().color(QPalette::WindowText), 1));
-    p.setBrush(lampColour(m_colour, m_lit));
+    // A lamp the manual gives no colour: filled when ON, empty when OFF, in the text's colours.
+    if (m_colour == model::LampColour::Unstated)
+        p.setBrush(palette().color(m_lit ? QPalette::WindowText : QPalette::Base));
+    else
+        p.setBrush(lampColour(m_colour, m_lit));
     p.drawEllipse(circle);
     p.setPen(palette().color(QPalette::WindowText));
     p.drawText(QRect(disc + fm.horizontalAdvance(QLatin1Char(' ')), 0, width(), height()),

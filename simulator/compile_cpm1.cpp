@@ -103,6 +103,18 @@ void Compiler::compileArithmetic(const model::Instruction &ins, Step &s) {
         s.op = static_cast<std::uint8_t>(f == ApplyFunction::SetCarry ? ArithOp::SetCarry
                                                                       : ArithOp::ClearCarry);
         break;
+    case ApplyFunction::FailureAlarm: {
+        // FAL(06) N: N into the byte the target names for it (W353: SR 253.00..253.07).
+        s.op = static_cast<std::uint8_t>(ArithOp::FailureAlarm);
+        s.x = sourceOf(ins, 0);
+        s.dest = -1;
+        if (const model::SystemDevice *d = m_target.systemDevice(model::SystemRole::AlarmNumber)) {
+            const auto parsed = model::parseAddress(m_target, d->device);
+            if (const auto *a = std::get_if<model::Address>(&parsed))
+                s.dest = m_layout->word(*a);
+        }
+        break;
+    }
     case ApplyFunction::SubroutineCall:
         s.code = Code::SubroutineCall; // its SBN(92): resolveSubroutines
         s.count = -1;

@@ -443,6 +443,7 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
     case ApplyFunction::ClearCarry:
     case ApplyFunction::SubroutineCall:
     case ApplyFunction::StepNext:
+    case ApplyFunction::FailureAlarm:
         compileArithmetic(ins, s); // compile_cpm1.cpp
         break;
     default:

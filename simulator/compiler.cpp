@@ -56,8 +56,9 @@ void Compiler::compileSystem() {
             bindFlag(d.role, m_layout->bit(a)); // compile_cpm1.cpp
             break;
         case model::SystemRole::Other:
-        case model::SystemRole::ByteMode:  // read by CCD (compile_words.cpp)
-        case model::SystemRole::HexDigits: // read by SMOV (compile_comm.cpp)
+        case model::SystemRole::ByteMode:    // read by CCD (compile_words.cpp)
+        case model::SystemRole::HexDigits:   // read by SMOV (compile_comm.cpp)
+        case model::SystemRole::AlarmNumber: // written by FAL(06) (compile_cpm1.cpp)
         // Communication (compile_comm.cpp, engine_comm.cpp; the network drives CPU Link's and
         // Parallel Link's).
         case model::SystemRole::LinkCycleDone:

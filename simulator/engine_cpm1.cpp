@@ -218,6 +218,18 @@ void Engine::arithmetic(const Step &s, std::size_t step) {
     case ArithOp::ClearCarry:
         setFlag(f.carry, static_cast<ArithOp>(s.op) == ArithOp::SetCarry);
         return;
+    case ArithOp::FailureAlarm: {
+        // FAL(06) N (W353): N 01..99 is a non-fatal error, its number as two BCD digits in the
+        // low byte of the alarm word (SR 253.00..253.07; 253.08..253.15 are other flags and keep
+        // theirs), and the program goes on; FAL 00 clears the number.
+        if (s.dest < 0)
+            return;
+        const auto i = static_cast<std::size_t>(s.dest);
+        const auto high = static_cast<std::uint32_t>(m_words[i]) & 0xFF00u;
+        const std::int32_t n = s.x.constant;
+        store(s.dest, high | (n > 0 && n <= 99 ? static_cast<std::uint32_t>(toBcd(n)) : 0u));
+        return;
+    }
     }
 }
 

@@ -141,6 +141,7 @@ enum class ArithOp : std::uint8_t {
     BinarySubtract,
     SetCarry,
     ClearCarry,
+    FailureAlarm, // FAL(06) N: x = N, dest = the SystemRole::AlarmNumber word (-1: none)
 };
 
 // The bits the application instructions set (model::SystemRole::InstructionError ...); an

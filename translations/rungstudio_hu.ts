@@ -844,19 +844,19 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::DebugController</name>
     <message>
-        <location filename="../app/gui/debug_controller.cpp" line="+44"/>
-        <location line="+190"/>
+        <location filename="../app/gui/debug_controller.cpp" line="+45"/>
+        <location line="+185"/>
         <source>Simulation</source>
         <translation>Szimuláció</translation>
     </message>
     <message>
-        <location line="-181"/>
-        <location line="+182"/>
+        <location line="-176"/>
+        <location line="+177"/>
         <source>Scan Debugger</source>
         <translation>Ciklushibakereső</translation>
     </message>
     <message>
-        <location line="-151"/>
+        <location line="-146"/>
         <source>No instruction on line %1 to stop at</source>
         <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
     </message>
@@ -886,7 +886,7 @@ PLC after serve restarts</source>
         <translation>A szimuláció leállítása</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+20"/>
         <source>S&amp;tep Instruction</source>
         <translation>Lé&amp;pés egy utasítással</translation>
     </message>
@@ -2404,7 +2404,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkDebugController</name>
     <message>
-        <location filename="../app/gui/network_debug_controller.cpp" line="+200"/>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+201"/>
         <source>No instruction on line %1 to stop at</source>
         <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
     </message>
@@ -2420,7 +2420,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 megállt a(z) %2. sor töréspontjánál; a többi állomás a ciklusa végén várakozik</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+41"/>
         <source>S&amp;tep Instruction</source>
         <translation>Lé&amp;pés egy utasítással</translation>
     </message>
@@ -4017,7 +4017,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::OnlineController</name>
     <message>
-        <location filename="../app/gui/online_controller.cpp" line="+73"/>
+        <location filename="../app/gui/online_controller.cpp" line="+74"/>
         <source>Go Online</source>
         <translation>Online kapcsolódás</translation>
     </message>
@@ -4052,7 +4052,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>&amp;Online</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
         <location line="+73"/>
         <source>Go &amp;Online</source>
         <translation>&amp;Online kapcsolódás</translation>
@@ -6414,7 +6414,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+362"/>
+        <location filename="../editor/front_panel.cpp" line="+368"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (billentyű: %3; lenyomva tartva %4 = 1)</translation>
     </message>
@@ -8592,7 +8592,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::PanelView</name>
     <message>
-        <location filename="../model/image/panel_view.cpp" line="+103"/>
+        <location filename="../model/image/panel_view.cpp" line="+114"/>
         <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
         <translation>%1. kijelzési mód: a kézikönyv a(z) %2. módot (egy %3 jegyű érték) és a(z) %4. módot (két %5 jegyű érték) írja le</translation>
     </message>
@@ -9389,7 +9389,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Egy ciklusig BE, amikor egy lépés elindul</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
+        <source>FAL number of a non-fatal error in 253.00..253.07 (BCD)</source>
+        <translation>nem lényegi hiba FAL száma a 253.00..253.07 biteken (BCD)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>analog setting 0 (BCD 0..200)</source>
         <translation>0. analóg beállítás (BCD 0..200)</translation>
     </message>
@@ -9551,9 +9556,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>analóg beállítások</translation>
     </message>
     <message>
+        <location line="+43"/>
+        <source>lit on a fatal error: the CPU stopped; blinks on a non-fatal error (FAL 01..99 in 253.00..253.07): the CPU goes on</source>
+        <translation>világít lényegi hibánál: a CPU leállt; villog nem lényegi hibánál (FAL 01..99 a 253.00..253.07 biteken): a CPU tovább dolgozik</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>lit while the PLC communicates; a simulated CPM1 has no port, so it stays dark</source>
+        <translation>világít, amíg a PLC kommunikál; a szimulált CPM1-nek nincs portja, ezért sötét marad</translation>
+    </message>
+    <message>
         <location filename="../model/target/target_cpm1_instructions.cpp" line="+70"/>
         <source>subroutine number</source>
         <translation>szubrutin száma</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>FAL number</source>
+        <translation>FAL szám</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -9717,7 +9737,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A szubrutin vége: vissza a hívó SBS utánra</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>Non-fatal error N: N into 253.00..253.07, the program goes on; FAL 00 clears it</source>
+        <translation>Nem lényegi hiba N: N a 253.00..253.07 bitekbe, a program tovább fut; a FAL 00 törli</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Start of the step of control bit B; without B: end of the steps</source>
         <translation>A B vezérlőbitű lépés kezdete; B nélkül: a lépések vége</translation>
     </message>
@@ -9727,7 +9752,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az aktuális lépés lezárása és a B vezérlőbitű lépés indítása</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="-37"/>
+        <location filename="../model/target/target_cpm1.cpp" line="-89"/>
         <location filename="../model/target/target_vigor.cpp" line="+25"/>
         <source>No operation</source>
         <translation>Nincs művelet</translation>
@@ -10951,6 +10976,16 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Ugrás vége</translation>
     </message>
     <message>
+        <location line="+65"/>
+        <source>input LED: lit while the input is ON</source>
+        <translation>bemeneti LED: világít, amíg a bemenet BE</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>output LED: lit while the output is ON</source>
+        <translation>kimeneti LED: világít, amíg a kimenet BE</translation>
+    </message>
+    <message>
         <location filename="../model/target/target_cpm1_maps.cpp" line="+20"/>
         <source>Omron Host Link (C-mode)</source>
         <translation>Omron Host Link (C mód)</translation>
@@ -10971,7 +11006,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Vigor CP2 MODBUS szolga</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+65"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+67"/>
         <source>lit while the PLC has power</source>
         <translation>világít, amíg a PLC feszültség alatt van</translation>
     </message>
@@ -10981,17 +11016,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>világít RUN vagy MONITOR üzemmódban; nem világít PROGRAM üzemmódban vagy hiba esetén</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>lit on a fatal error: the CPU stopped</source>
-        <translation>világít lényegi hibánál: a CPU leállt</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>lit while the PLC communicates (not simulated: always dark)</source>
-        <translation>világít, amíg a PLC kommunikál (nincs szimulálva: mindig sötét)</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+20"/>
         <source>analog setting: 0..200 as BCD into its channel</source>
         <translation>analóg beállítás: 0..200 BCD-ben a csatornájába</translation>
     </message>
@@ -11565,7 +11590,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a híd nem nyílt meg: %2</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+44"/>
         <source>%1: the bridge&apos;s line failed: %2 (Stop opens it again)</source>
         <extracomment>%1 the bridged port (&quot;s5/CP2&quot;), %2 what happened to its line</extracomment>
         <translation>%1: a híd vonala meghibásodott: %2 (a Megállás újra megnyitja)</translation>
@@ -12049,7 +12074,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+191"/>
+        <location filename="../simulator/compiler.cpp" line="+192"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>

@@ -846,19 +846,19 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::DebugController</name>
     <message>
-        <location filename="../app/gui/debug_controller.cpp" line="+44"/>
-        <location line="+190"/>
+        <location filename="../app/gui/debug_controller.cpp" line="+45"/>
+        <location line="+185"/>
         <source>Simulation</source>
         <translation>Simulazione</translation>
     </message>
     <message>
-        <location line="-181"/>
-        <location line="+182"/>
+        <location line="-176"/>
+        <location line="+177"/>
         <source>Scan Debugger</source>
         <translation>Debugger della scansione</translation>
     </message>
     <message>
-        <location line="-151"/>
+        <location line="-146"/>
         <source>No instruction on line %1 to stop at</source>
         <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
     </message>
@@ -888,7 +888,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>Ferma la simulazione</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+20"/>
         <source>S&amp;tep Instruction</source>
         <translation>P&amp;asso di una istruzione</translation>
     </message>
@@ -2411,7 +2411,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkDebugController</name>
     <message>
-        <location filename="../app/gui/network_debug_controller.cpp" line="+200"/>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+201"/>
         <source>No instruction on line %1 to stop at</source>
         <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
     </message>
@@ -2427,7 +2427,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 si è fermata al punto di interruzione della riga %2; le altre stazioni attendono alla fine della loro scansione</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+41"/>
         <source>S&amp;tep Instruction</source>
         <translation>P&amp;asso di una istruzione</translation>
     </message>
@@ -4026,7 +4026,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::OnlineController</name>
     <message>
-        <location filename="../app/gui/online_controller.cpp" line="+73"/>
+        <location filename="../app/gui/online_controller.cpp" line="+74"/>
         <source>Go Online</source>
         <translation>Vai online</translation>
     </message>
@@ -4061,7 +4061,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>&amp;In linea</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
         <location line="+73"/>
         <source>Go &amp;Online</source>
         <translation>Vai &amp;online</translation>
@@ -6429,7 +6429,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+362"/>
+        <location filename="../editor/front_panel.cpp" line="+368"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (tasto %3; tenuto premuto, %4 vale 1)</translation>
     </message>
@@ -8615,7 +8615,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::PanelView</name>
     <message>
-        <location filename="../model/image/panel_view.cpp" line="+103"/>
+        <location filename="../model/image/panel_view.cpp" line="+114"/>
         <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
         <translation>Modo di visualizzazione %1: il manuale descrive il modo %2 (un valore di %3 cifre) e il modo %4 (due valori di %5 cifre)</translation>
     </message>
@@ -9412,7 +9412,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>ON per un ciclo quando una fase inizia</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
+        <source>FAL number of a non-fatal error in 253.00..253.07 (BCD)</source>
+        <translation>numero FAL di un errore non grave in 253.00..253.07 (BCD)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>analog setting 0 (BCD 0..200)</source>
         <translation>impostazione analogica 0 (BCD 0..200)</translation>
     </message>
@@ -9574,9 +9579,24 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>regolazioni analogiche</translation>
     </message>
     <message>
+        <location line="+43"/>
+        <source>lit on a fatal error: the CPU stopped; blinks on a non-fatal error (FAL 01..99 in 253.00..253.07): the CPU goes on</source>
+        <translation>acceso per un errore grave: la CPU si è fermata; lampeggia per un errore non grave (FAL 01..99 in 253.00..253.07): la CPU prosegue</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>lit while the PLC communicates; a simulated CPM1 has no port, so it stays dark</source>
+        <translation>acceso mentre il PLC comunica; un CPM1 simulato non ha porte, quindi resta spento</translation>
+    </message>
+    <message>
         <location filename="../model/target/target_cpm1_instructions.cpp" line="+70"/>
         <source>subroutine number</source>
         <translation>numero di subroutine</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>FAL number</source>
+        <translation>numero FAL</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -9740,7 +9760,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine della subroutine: ritorno dopo la sua SBS</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>Non-fatal error N: N into 253.00..253.07, the program goes on; FAL 00 clears it</source>
+        <translation>Errore non grave N: N in 253.00..253.07, il programma prosegue; FAL 00 lo cancella</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Start of the step of control bit B; without B: end of the steps</source>
         <translation>Inizio della fase con bit di controllo B; senza B: fine delle fasi</translation>
     </message>
@@ -9750,7 +9775,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Termina la fase corrente e avvia la fase con bit di controllo B</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="-37"/>
+        <location filename="../model/target/target_cpm1.cpp" line="-89"/>
         <location filename="../model/target/target_vigor.cpp" line="+25"/>
         <source>No operation</source>
         <translation>Nessuna operazione</translation>
@@ -10974,6 +10999,16 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine di un salto</translation>
     </message>
     <message>
+        <location line="+65"/>
+        <source>input LED: lit while the input is ON</source>
+        <translation>LED d&apos;ingresso: acceso finché l&apos;ingresso è ON</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>output LED: lit while the output is ON</source>
+        <translation>LED d&apos;uscita: acceso finché l&apos;uscita è ON</translation>
+    </message>
+    <message>
         <location filename="../model/target/target_cpm1_maps.cpp" line="+20"/>
         <source>Omron Host Link (C-mode)</source>
         <translation>Omron Host Link (modo C)</translation>
@@ -10994,7 +11029,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Vigor CP2 slave MODBUS</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+65"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+67"/>
         <source>lit while the PLC has power</source>
         <translation>acceso finché il PLC è alimentato</translation>
     </message>
@@ -11004,17 +11039,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>acceso in modo RUN o MONITOR; spento in modo PROGRAM o in caso di errore</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>lit on a fatal error: the CPU stopped</source>
-        <translation>acceso per un errore grave: la CPU si è fermata</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>lit while the PLC communicates (not simulated: always dark)</source>
-        <translation>acceso mentre il PLC comunica (non simulato: sempre spento)</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+20"/>
         <source>analog setting: 0..200 as BCD into its channel</source>
         <translation>impostazione analogica: 0..200 in BCD nel suo canale</translation>
     </message>
@@ -11588,7 +11613,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il ponte non si è aperto: %2</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+44"/>
         <source>%1: the bridge&apos;s line failed: %2 (Stop opens it again)</source>
         <extracomment>%1 the bridged port (&quot;s5/CP2&quot;), %2 what happened to its line</extracomment>
         <translation>%1: la linea del ponte si è guastata: %2 (Stop la riapre)</translation>
@@ -12056,7 +12081,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location line="+13"/>
         <source>the text does not fit in the area of %1 from there on</source>
-        <translation>il testo non entra nell'area di %1 da lì in poi</translation>
+        <translation>il testo non entra nell&apos;area di %1 da lì in poi</translation>
     </message>
     <message>
         <location line="-71"/>
@@ -12074,7 +12099,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+191"/>
+        <location filename="../simulator/compiler.cpp" line="+192"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>

@@ -73,6 +73,17 @@ PanelLampView lampView(const Target &target, const PanelLamp &lamp, const PanelI
     case LampSignal::Fault:
         v.lit = in.fault;
         break;
+    case LampSignal::Alarm:
+        // A fatal error: lit. A non-fatal one (its bits in the word ON): blinking. Neither: dark.
+        if (in.fault) {
+            v.lit = true;
+        } else if (const auto a = panelDevice(target, lamp.device);
+                   a && (readValue(in, view, *a) & lamp.deviceMask) != 0 &&
+                   in.runState != MonitorSource::RunState::Offline && lamp.alarmBlinkMs > 0) {
+            v.blinkMs = lamp.alarmBlinkMs;
+            v.lit = (in.nowMs % (2 * lamp.alarmBlinkMs)) < lamp.alarmBlinkMs;
+        }
+        break;
     case LampSignal::Device:
         if (const auto a = panelDevice(target, lamp.device))
             v.lit = readBit(in, view, *a);
@@ -327,11 +338,31 @@ void ioLinesView(const Target &target, const ModelVariant *model, const PanelDis
     }
 }
 
+// A lamp for each element of the areas the model has them for (VPC: the I/O LEDs).
+void pointLampsView(const Target &target, const ModelVariant *model, const FrontPanel &p,
+                    const PanelInput &in, PanelView &v) {
+    const QString modelName = model ? model->name : target.defaultModel().name;
+    for (const PanelPointLamps &points : p.pointLamps) {
+        if (!points.models.isEmpty() && !points.models.contains(modelName))
+            continue;
+        for (std::size_t k = 0; k < target.areas.size(); ++k) {
+            if (target.areas[k].key != points.area)
+                continue;
+            const auto range = target.range(static_cast<int>(k), model);
+            for (int n = range ? range->first : 0; range && n <= range->second; ++n) {
+                const Address a{static_cast<int>(k), n, -1};
+                v.lamps.push_back({formatAddress(target, a), points.colour, readBit(in, v, a), 0,
+                                   points.meaning});
+            }
+        }
+    }
+}
+
 } // namespace
 
 bool hasFrontPanel(const Target &target, const ModelVariant *model) {
     const FrontPanel &p = target.panel;
-    if (!p.lamps.empty() || !p.knobs.empty())
+    if (!p.lamps.empty() || !p.pointLamps.empty() || !p.knobs.empty())
         return true;
     if (p.display.kind == DisplayKind::Text)
         return modelHasArea(target, model, p.display.charArea);
@@ -343,6 +374,7 @@ PanelView panelView(const Target &target, const ModelVariant *model, const Panel
     const FrontPanel &p = target.panel;
     for (const PanelLamp &lamp : p.lamps)
         v.lamps.push_back(lampView(target, lamp, input, v));
+    pointLampsView(target, model, p, input, v);
     for (const PanelKnob &k : p.knobs) {
         const auto a = panelDevice(target, k.device);
         if (!a)

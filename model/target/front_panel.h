@@ -7,34 +7,56 @@
 // leaves the table empty.
 
 #include <QString>
+#include <QStringList>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
 namespace rung::model {
 
-enum class LampColour : std::uint8_t { Green, Red, Yellow, Orange };
+// Unstated: the manual gives the lamp no colour (VPC user's manual, II: "LEDs to show which
+// inputs/outputs are driven ON"); it is drawn plainly, filled when ON, empty when OFF.
+enum class LampColour : std::uint8_t { Green, Red, Yellow, Orange, Unstated };
 
 // What lights a lamp.
 enum class LampSignal : std::uint8_t {
     Power,   // the PLC has power: the source is not Offline
     Running, // the program runs (a paused simulation is a PLC in RUN frozen in time)
     Fault,   // the source reports an error that stopped the program
-    Device,  // a bit device of the table (PL110 COM1: its port's "transmitting" marker)
-    Never,   // what lights it is not simulated; the lamp is shown dark with its meaning
+    // Fault, and besides it blinks (PanelLamp::alarmBlinkMs) while the word `device` has a bit
+    // of `deviceMask` ON: a non-fatal error the program goes on after (Omron CPM1 guide 2.1,
+    // ERROR/ALARM "Villog: Nem lényegi hiba, a CPU tovább dolgozik"; the FAL number in 253.00..
+    // 253.07, W353 FAL(06)).
+    Alarm,
+    Device, // a bit device of the table (PL110 COM1: its port's "transmitting" marker)
+    Never,  // what lights it is not simulated; the lamp is shown dark with its meaning
 };
 
 struct PanelLamp {
     QString label; // as printed on the PLC ("RUN", "COM1", "ERROR/ALARM"): not translated
     LampColour colour = LampColour::Green;
     LampSignal signal = LampSignal::Running;
-    QString device; // LampSignal::Device: the bit
+    QString device; // LampSignal::Device: the bit; LampSignal::Alarm: the word
     // LampSignal::Running: while a program is loaded but does not run, the lamp blinks this
     // many ms on and as many off (PL110 manual 1.2: "Lampeggio lento - (0,5s on /0,5 s off)");
     // 0: it is dark then.
     int stoppedBlinkMs = 0;
     // QT_TRANSLATE_NOOP("rung::model::Target", ...): what the manual's table says it means.
     const char *meaning = nullptr;
+    // LampSignal::Alarm: the bits of `device` that hold the non-fatal error, and the blink
+    // (this many ms on and as many off).
+    int deviceMask = 0xffff;
+    int alarmBlinkMs = 0;
+};
+
+// A lamp for each element of an area the model has, labelled by its address and lit while its
+// bit is ON (VPC user's manual, II: "LEDs to show which inputs/outputs are driven ON (VPC2416
+// and higher)"). Shown after FrontPanel::lamps, in the order of the table.
+struct PanelPointLamps {
+    QString area;       // Area::key
+    QStringList models; // the models that have them; empty: every model
+    LampColour colour = LampColour::Unstated;
+    const char *meaning = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
 };
 
 enum class DisplayKind : std::uint8_t {
@@ -149,12 +171,14 @@ struct PowerOnValue {
 
 struct FrontPanel {
     std::vector<PanelLamp> lamps;
+    std::vector<PanelPointLamps> pointLamps;
     PanelDisplay display;
     std::vector<PanelKnob> knobs;
     std::vector<PanelKey> keys; // the display's terminal: absent when the display is
     std::vector<PowerOnValue> powerOn;
     bool empty() const {
-        return lamps.empty() && display.kind == DisplayKind::None && knobs.empty();
+        return lamps.empty() && pointLamps.empty() && display.kind == DisplayKind::None &&
+               knobs.empty();
     }
 };
 

@@ -144,6 +144,9 @@ enum class SystemRole : std::uint8_t {
     Equal,
     Less,
     StepStart, // ON for one cycle when a STEP(08) step starts (W353: SR 25407)
+    // The word whose low byte holds the number of the last non-fatal error as two BCD digits
+    // (W353 FAL(06): the FAL number in SR 253.00..253.07), 00 when there is none.
+    AlarmNumber,
     // The program's choice of 8-bit data (Vigor M9161, Vigor M/VB/VH communication manual,
     // B-3-9: "16-bit mode (M9161=OFF) and 8-bit mode (M9161=ON)"): while ON, CCD and the RS
     // family take one byte, the low one, from each word; OFF, both bytes, low first.
@@ -364,6 +367,9 @@ enum class ApplyFunction : std::uint8_t {
     ClearCarry,     // CLC(41)
     SubroutineCall, // SBS(91) N: run subroutine N (SBN(92) N .. RET(93)) and come back
     StepNext,       // SNXT(09) B: end the current step, start the step of control bit B
+    // FAL(06) N: a non-fatal error N (01..99) into the SystemRole::AlarmNumber byte, the
+    // program goes on; FAL 00 clears it.
+    FailureAlarm,
     // Vigor CCD S D n (FX / Delta FNC 84): the sum of n bytes from S into D, their parity
     // (XOR) into D+1; bytes as SystemRole::ByteMode says.
     CheckCode,

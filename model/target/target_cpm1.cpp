@@ -120,6 +120,11 @@ Target makeCpm1Target() {
          QT_TRANSLATE_NOOP("rung::model::Target", "LE: less than")},
         {QStringLiteral("254.07"), SystemRole::StepStart,
          QT_TRANSLATE_NOOP("rung::model::Target", "ON for one cycle when a step starts")},
+        // The FAL area (W353 FAL(06)): the number of the last non-fatal error, BCD, in
+        // 253.00..253.07.
+        {QStringLiteral("253"), SystemRole::AlarmNumber,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "FAL number of a non-fatal error in 253.00..253.07 (BCD)")},
         {QStringLiteral("250"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "analog setting 0 (BCD 0..200)")},
         {QStringLiteral("251"), SystemRole::Other,
@@ -271,9 +276,11 @@ Target makeCpm1Target() {
     t.protocolMaps = cpm1ProtocolMaps();
     // The CPU unit's front (Omron CPM1 guide 2.1, "A CPU egységen található állapotjelző
     // LED-ek értelmezése"; 3.4 the analog settings: "0. Potenciométer: 250 -es csatorna").
-    // ERROR/ALARM also blinks on an error that lets the CPU go on ("Nem lényegi hiba"); the
-    // simulation stops on every error it reports, so it is lit or dark. COMM: the simulation of
-    // one PLC does not communicate.
+    // ERROR/ALARM: "Világít - Lényegi hiba, a CPU leállt" (the simulation's errors); "Villog -
+    // Nem lényegi hiba, a CPU tovább dolgozik": while a FAL(06) number is in 253.00..253.07.
+    // Neither the guide nor W353 gives the blink's rate: 0.5 s on, 0.5 s off is our choice.
+    // COMM: a simulated CPM1 has no port (no network port runs Host Link: docs/network.md), so
+    // it never communicates.
     t.panel.lamps = {
         {QStringLiteral("POWER"),
          LampColour::Green,
@@ -288,19 +295,20 @@ Target makeCpm1Target() {
          0,
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "lit in RUN or MONITOR mode; dark in PROGRAM mode or on an error")},
-        {QStringLiteral("ERROR/ALARM"),
-         LampColour::Red,
-         LampSignal::Fault,
-         {},
+        {QStringLiteral("ERROR/ALARM"), LampColour::Red, LampSignal::Alarm, QStringLiteral("253"),
          0,
-         QT_TRANSLATE_NOOP("rung::model::Target", "lit on a fatal error: the CPU stopped")},
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "lit on a fatal error: the CPU stopped; blinks on a non-fatal error "
+                           "(FAL 01..99 in 253.00..253.07): the CPU goes on"),
+         0x00ff, 500},
         {QStringLiteral("COMM"),
          LampColour::Orange,
          LampSignal::Never,
          {},
          0,
          QT_TRANSLATE_NOOP("rung::model::Target",
-                           "lit while the PLC communicates (not simulated: always dark)")},
+                           "lit while the PLC communicates; a simulated CPM1 has no port, so "
+                           "it stays dark")},
     };
     for (int pot = 0; pot < 2; ++pot)
         t.panel.knobs.push_back(

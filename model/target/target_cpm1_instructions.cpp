@@ -68,6 +68,11 @@ void addCpm1ApplicationInstructions(Target &t) {
     subroutine.lowest = 0;
     subroutine.highest = 49;
     subroutine.name = QT_TRANSLATE_NOOP("rung::model::Target", "subroutine number");
+    // The FAL number (W353 FAL(06): 00..99).
+    OperandSpec failureNumber{K::Label};
+    failureNumber.lowest = 0;
+    failureNumber.highest = 99;
+    failureNumber.name = QT_TRANSLATE_NOOP("rung::model::Target", "FAL number");
     // SFT(10) / WSFT(16) St E: E in St's area, not before it (W353 "Limitations").
     OperandSpec start = word(K::WordDest, QT_TRANSLATE_NOOP("rung::model::Target", "start word"));
     OperandSpec end = word(K::WordDest, QT_TRANSLATE_NOOP("rung::model::Target", "end word"));
@@ -293,6 +298,19 @@ void addCpm1ApplicationInstructions(Target &t) {
          {},
          QT_TRANSLATE_NOOP("rung::model::Target", "End of the subroutine: back after its SBS"),
          nullptr,
+         false},
+        // A non-fatal error (W353 FAL(06)): N 01..99 into SR 253.00..253.07, the program goes
+        // on and ERROR/ALARM blinks (Omron CPM1 guide 2.1); FAL 00 clears it. FALS(07), the
+        // fatal error that stops the CPU, is not in the table.
+        {"FAL",
+         6,
+         Op::Apply,
+         F::FailureAlarm,
+         {failureNumber},
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "Non-fatal error N: N into 253.00..253.07, the program goes on; FAL "
+                           "00 clears it"),
+         "00..99",
          false},
         // Step instructions (W353 "Step Instructions").
         {"STEP",

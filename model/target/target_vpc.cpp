@@ -247,6 +247,20 @@ Target makeVpcTarget() {
     // display is for the inputs, shown in the same manner. A filled field represents the state
     // ON, the empty one - OFF." The other windows and the console's keys edit and search the
     // program; they are not simulated.
+    // The front's LEDs (VPC user's manual, II Technical specifications, "Indication": "LEDs to show
+    // which inputs/outputs are driven ON (VPC2416 and higher)", higher in the manual's list of
+    // models): one a point, lit while it is ON. The manual names no lamp for power, RUN or errors
+    // (r89 ERR is a register), gives the LEDs no colour and no arrangement: they are drawn plainly,
+    // in the order of the devices.
+    const QStringList withLeds = {QStringLiteral("VPC2416"), QStringLiteral("VPC3224L"),
+                                  QStringLiteral("VPC3224A63"), QStringLiteral("VPC4030"),
+                                  QStringLiteral("VPC4030A84")};
+    t.panel.pointLamps = {
+        {QStringLiteral("i"), withLeds, LampColour::Unstated,
+         QT_TRANSLATE_NOOP("rung::model::Target", "input LED: lit while the input is ON")},
+        {QStringLiteral("o"), withLeds, LampColour::Unstated,
+         QT_TRANSLATE_NOOP("rung::model::Target", "output LED: lit while the output is ON")},
+    };
     t.panel.display.kind = DisplayKind::IoLines;
     t.panel.display.lineAreas = {QStringLiteral("o"), QStringLiteral("i")};
     t.panel.display.perLine = 16;

@@ -171,6 +171,58 @@ TEST(FrontPanelView, Cpm1AnalogSettingWritesBcd) {
     EXPECT_TRUE(f.panel.lamp(QStringLiteral("POWER"))->isLit());
 }
 
+// Omron CPM1 guide 2.1, ERROR/ALARM: "Villog - Nem lényegi hiba, a CPU tovább dolgozik": the
+// program's FAL(06) 12 (W353) makes the lamp blink while RUN stays lit; FAL 00 clears it and
+// the lamp goes dark ("Nem világít - Normál működés").
+TEST(FrontPanelView, Cpm1ErrorAlarmBlinksWhileAFalNumberIsSet) {
+    PanelFixture f;
+    f.start(rung::testing::cpm1(), QStringLiteral("CPM1-20CDR"),
+            "LD 000.00\nFAL(06) 12\nLD 000.01\nFAL(06) 00\nEND\n");
+    f.scan();
+    editor::PanelLamp *alarm = f.panel.lamp(QStringLiteral("ERROR/ALARM"));
+    ASSERT_NE(alarm, nullptr);
+    EXPECT_FALSE(alarm->isLit());
+    EXPECT_EQ(alarm->blinkMs(), 0);
+    f.session->writeBit(f.at("000.00"), true);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(f.value("253") & 0xFF, 0x12);
+    EXPECT_EQ(alarm->blinkMs(), 500);
+    EXPECT_TRUE(eventually([&] { return alarm->isLit(); }));
+    EXPECT_TRUE(eventually([&] { return !alarm->isLit(); }));
+    EXPECT_TRUE(eventually([&] { return alarm->isLit(); }));
+    EXPECT_TRUE(f.panel.lamp(QStringLiteral("RUN"))->isLit()) << "the CPU goes on";
+    EXPECT_FALSE(alarm->toolTip().isEmpty());
+    f.session->writeBit(f.at("000.00"), false);
+    f.session->writeBit(f.at("000.01"), true);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(alarm->blinkMs(), 0);
+    EXPECT_FALSE(alarm->isLit());
+}
+
+// VPC user's manual, II: "LEDs to show which inputs/outputs are driven ON (VPC2416 and higher)":
+// the panel has a lamp for each, lit with its point.
+TEST(FrontPanelView, VpcLedsFollowTheInputsAndOutputs) {
+    PanelFixture f;
+    f.start(rung::testing::vpc(), QStringLiteral("VPC2416"), "LD i03\nOUT o05\nEND\n");
+    f.scan();
+    editor::PanelLamp *input = f.panel.lamp(QStringLiteral("i03"));
+    editor::PanelLamp *output = f.panel.lamp(QStringLiteral("o05"));
+    ASSERT_NE(input, nullptr);
+    ASSERT_NE(output, nullptr);
+    EXPECT_NE(f.panel.lamp(QStringLiteral("i23")), nullptr);
+    EXPECT_EQ(f.panel.lamp(QStringLiteral("i24")), nullptr);
+    EXPECT_FALSE(input->isLit());
+    f.session->writeBit(f.at("i03"), true);
+    f.settle();
+    f.scan();
+    f.scan(); // VPC coils take effect from the next scan
+    EXPECT_TRUE(input->isLit());
+    EXPECT_TRUE(output->isLit());
+    EXPECT_FALSE(f.panel.lamp(QStringLiteral("o04"))->isLit());
+}
+
 // The window: View > Front Panel, fed by the simulation as the other monitoring docks are (F10
 // shows it); showSource points it at any source of any PLC (a network station's) and
 // showSimulation back.

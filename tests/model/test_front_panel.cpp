@@ -269,6 +269,57 @@ TEST(FrontPanel, Cpm1AnalogSettingsAreBcdAndItsLampsAreTheGuides) {
     EXPECT_EQ(v.display, model::DisplayKind::None);
 }
 
+// Omron CPM1 guide 2.1, ERROR/ALARM (piros): "Világít - Lényegi hiba, a CPU leállt", "Villog -
+// Nem lényegi hiba, a CPU tovább dolgozik", "Nem világít - Normál működés". A non-fatal error is
+// a FAL number in 253.00..253.07 (W353 FAL(06)); the guide gives no blink rate: 0.5 s.
+TEST(FrontPanel, Cpm1ErrorAlarmBlinksOnANonFatalErrorAndIsLitOnAFatalOne) {
+    PanelImage image(rung::testing::cpm1());
+    using R = MonitorSource::RunState;
+    const auto alarm = [&](qint64 ms, bool fault = false) {
+        return *lamp(image.view(R::Running, nullptr, ms, fault), "ERROR/ALARM");
+    };
+    image.set("253", 0x2000); // 253.13, always ON: no error
+    EXPECT_FALSE(alarm(0).lit);
+    EXPECT_EQ(alarm(0).blinkMs, 0) << "normal operation: dark";
+    image.set("253", 0x2012); // FAL 12
+    EXPECT_EQ(alarm(0).blinkMs, 500);
+    EXPECT_TRUE(alarm(0).lit);
+    EXPECT_TRUE(alarm(499).lit);
+    EXPECT_FALSE(alarm(500).lit);
+    EXPECT_TRUE(alarm(1000).lit);
+    EXPECT_TRUE(lamp(image.view(R::Running, nullptr, 500), "RUN")->lit) << "the CPU goes on";
+    // A fatal error: lit, steady, whatever FAL number is there; RUN dark.
+    EXPECT_TRUE(alarm(500, true).lit);
+    EXPECT_EQ(alarm(500, true).blinkMs, 0);
+    image.set("253", 0);
+    EXPECT_TRUE(alarm(0, true).lit);
+    EXPECT_FALSE(lamp(image.view(R::Running, nullptr, 0, true), "RUN")->lit);
+    // Without power nothing is lit.
+    image.set("253", 0x0012);
+    EXPECT_FALSE(lamp(image.view(R::Offline, nullptr, 0), "ERROR/ALARM")->lit);
+}
+
+// VPC user's manual, II Technical specifications, Indication: "LEDs to show which
+// inputs/outputs are driven ON (VPC2416 and higher)": a lamp a point on those models, none on
+// the smaller ones; no colour is given, so none is invented.
+TEST(FrontPanel, VpcInputAndOutputLedsOnVpc2416AndHigher) {
+    PanelImage image(rung::testing::vpc());
+    image.set("i01", 1);
+    image.set("o15", 1);
+    const model::PanelView v = image.view(MonitorSource::RunState::Running, "VPC2416");
+    ASSERT_EQ(v.lamps.size(), 24u + 16u);
+    EXPECT_EQ(v.lamps.front().label, QStringLiteral("i00"));
+    EXPECT_EQ(v.lamps.back().label, QStringLiteral("o15"));
+    EXPECT_EQ(v.lamps.front().colour, model::LampColour::Unstated);
+    EXPECT_FALSE(lamp(v, "i00")->lit);
+    EXPECT_TRUE(lamp(v, "i01")->lit);
+    EXPECT_TRUE(lamp(v, "o15")->lit);
+    EXPECT_FALSE(lamp(v, "o14")->lit);
+    EXPECT_EQ(image.view(MonitorSource::RunState::Running, "VPC4030A84").lamps.size(), 40u + 30u);
+    for (const char *smaller : {"VPC106", "VPC108A4", "VPC1410", "VPC1812"})
+        EXPECT_TRUE(image.view(MonitorSource::RunState::Running, smaller).lamps.empty()) << smaller;
+}
+
 // VPC user's manual, V.a: "The upper part of the display is for the outputs, shown by 16 per
 // line. The lower part of the display is for the inputs ... A filled field represents the state
 // ON".

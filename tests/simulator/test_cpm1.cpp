@@ -330,6 +330,29 @@ TEST(Cpm1Steps, AnEndedStepResetsOutputsAndTimersKeepsKeep) {
     EXPECT_TRUE(s.bit("200.01"));
 }
 
+// W353 FAL(06) N: a non-fatal error, its number N (01..99) in SR 253.00..253.07 as BCD, and
+// the CPU goes on (Omron CPM1 guide 2.1, ERROR/ALARM: "Villog - Nem lényegi hiba, a CPU tovább
+// dolgozik"); FAL 00 clears it. 253.13 (always ON) and the other flags of 253 keep theirs.
+TEST(Cpm1Fal, ANonFatalErrorPutsItsNumberInto253AndTheProgramGoesOn) {
+    Cpm1Sim s("LD 000.00;FAL(06) 12;LD 000.01;FAL(06) 00;LD 253.13;OUT 010.00;END(01)");
+    ASSERT_TRUE(s.result.ok()) << s.errors();
+    s.engine->scan();
+    EXPECT_EQ(s.hex("253") & 0xFFu, 0u) << "no error yet";
+    s.in("000.00", true);
+    s.engine->scan();
+    EXPECT_EQ(s.hex("253") & 0xFFu, 0x12u) << "FAL 12 as BCD digits";
+    EXPECT_TRUE(s.bit("253.13")) << "the high byte's flags are not touched";
+    EXPECT_TRUE(s.bit("010.00")) << "the program goes on after the FAL";
+    EXPECT_TRUE(s.engine->runtimeErrors().empty()) << "a non-fatal error stops nothing";
+    s.in("000.00", false);
+    s.engine->scan();
+    EXPECT_EQ(s.hex("253") & 0xFFu, 0x12u) << "the number stays after the condition goes OFF";
+    s.in("000.01", true);
+    s.engine->scan();
+    EXPECT_EQ(s.hex("253") & 0xFFu, 0u) << "FAL 00 clears it";
+    EXPECT_TRUE(s.bit("253.13"));
+}
+
 // `check` and the simulator refuse the same operands with the same words (issue 14).
 TEST(Cpm1Operands, TheSimulatorRefusesWhatCheckReports) {
     for (const char *listing :
@@ -338,7 +361,8 @@ TEST(Cpm1Operands, TheSimulatorRefusesWhatCheckReports) {
           "LD 000.00;LD 000.01;LD 000.02;SFT(10) 201 200;END(01)",
           "LD 000.00;LD 000.01;LD 000.02;SFT(10) DM 0000 DM 0001;END(01)",
           "LD 000.00;MUL(32) #0002 #0003 DM 1023;END(01)", "LD 000.00;SBS(91) 50;END(01)",
-          "LD 000.00;SBS(91) 03;END(01)", "SBN(92) 01;LD 253.13;OUT 010.00;END(01)"}) {
+          "LD 000.00;SBS(91) 03;END(01)", "SBN(92) 01;LD 253.13;OUT 010.00;END(01)",
+          "LD 000.00;FAL(06) 100;END(01)"}) {
         Cpm1Sim s(listing);
         ASSERT_TRUE(s.parsed.ok()) << listing;
         EXPECT_FALSE(s.result.ok()) << listing;
