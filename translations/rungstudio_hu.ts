@@ -3673,7 +3673,7 @@ Menti mégis, ezek nélkül?</translation>
     <message>
         <location line="+8"/>
         <source>Spee&amp;d</source>
-        <translation>S&amp;ebesség</translation>
+        <translation>Se&amp;besség</translation>
     </message>
     <message>
         <location line="+3"/>

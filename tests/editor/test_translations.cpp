@@ -1,6 +1,7 @@
 // The Hungarian and Italian catalogues: complete, faithful to the placeholders, embedded in the
 // program, and reaching every room (menus, diagnostics of the model, QScintilla's own menu).
 #include "app/gui/main_window.h"
+#include "app/gui/network_window.h"
 #include "editor/il_editor.h"
 #include "model/checks/checks.h"
 #include "model/listing/il.h"
@@ -201,6 +202,12 @@ TEST(Translations, NoTwoEntriesOfAMenuShareAnAccessKey) {
             clashingAccessKeys(QStringLiteral("menu bar"), window.menuBar()->actions());
         EXPECT_TRUE(clashes.isEmpty())
             << code << ": " << clashes.join(QStringLiteral("; ")).toStdString();
+        // The network window's menus too (Hungarian Speed and Run For shared "e" once).
+        app::NetworkWindow network;
+        const QStringList networkClashes =
+            clashingAccessKeys(QStringLiteral("network menu bar"), network.menuBar()->actions());
+        EXPECT_TRUE(networkClashes.isEmpty())
+            << code << ": " << networkClashes.join(QStringLiteral("; ")).toStdString();
     }
 }
 
