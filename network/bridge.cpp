@@ -68,33 +68,29 @@ openBridgeLine(const BridgeDescription &b, const model::SerialSettings &line, QS
         *where = b.where;
         break;
     case BridgeDescription::Kind::Tcp: {
-        const qsizetype colon = b.where.lastIndexOf(QLatin1Char(':'));
-        bool ok = false;
-        const uint tcpPort = colon > 0 ? b.where.mid(colon + 1).toUInt(&ok) : 0;
-        if (!ok || tcpPort == 0 || tcpPort > 65535) {
+        const std::optional<HostPort> hostPort = splitHostPort(b.where);
+        if (!hostPort || hostPort->port == 0) {
             *error = NetworkTr::tr("%1.tcp: \"%2\" is not HOST:PORT").arg(b.path, b.where);
             return nullptr;
         }
-        transport = std::make_unique<comms::TcpTransport>(b.where.left(colon), quint16(tcpPort));
+        transport = std::make_unique<comms::TcpTransport>(hostPort->host, quint16(hostPort->port));
         *where = b.where;
         break;
     }
     case BridgeDescription::Kind::Listen: {
         // Port 0 takes any free port; *where then says which.
-        const qsizetype colon = b.where.lastIndexOf(QLatin1Char(':'));
-        bool ok = false;
-        const uint tcpPort = colon > 0 ? b.where.mid(colon + 1).toUInt(&ok) : 0;
-        const QString hostName = b.where.left(std::max<qsizetype>(colon, 0));
+        const std::optional<HostPort> hostPort = splitHostPort(b.where);
+        const QString hostName = hostPort ? hostPort->host : QString();
         const QHostAddress host = hostName == QLatin1String("localhost")
                                       ? QHostAddress(QHostAddress::LocalHost)
                                       : QHostAddress(hostName);
-        if (!ok || tcpPort > 65535 || host.isNull()) {
+        if (!hostPort || host.isNull()) {
             *error = NetworkTr::tr("%1.listen: \"%2\" is not ADDRESS:PORT (an IP address of "
                                    "this machine, 0.0.0.0 for all, or localhost)")
                          .arg(b.path, b.where);
             return nullptr;
         }
-        transport = std::make_unique<comms::TcpListenTransport>(host, quint16(tcpPort));
+        transport = std::make_unique<comms::TcpListenTransport>(host, quint16(hostPort->port));
         break;
     }
     }

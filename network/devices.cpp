@@ -12,9 +12,6 @@ namespace {
 
 using namespace comms::modbus;
 
-// A device keeps at most this much of what it received.
-constexpr qsizetype kMaxKept = 64 * 1024;
-
 bool readLine(const QJsonObject &o, const QString &where, const char *defaultFrame,
               model::SerialSettings *line, QString *error) {
     line->baud = o.value(QLatin1String("baud")).toInt(19200);
@@ -149,7 +146,7 @@ void ModbusSlaveDevice::deliver(const QByteArray &bytes, int, qint64 atUs) {
         }
         m_decoder->next();
     }
-    if (m_decoder->buffered() > kMaxKept)
+    if (m_decoder->buffered() > kMaxReceivedKept)
         m_decoder = std::make_unique<RequestDecoder>(m_framing);
 }
 
@@ -280,8 +277,7 @@ bool LineDevice::read(const DeviceDescription &d, QString *error) {
 
 void LineDevice::deliver(const QByteArray &bytes, int, qint64 atUs) {
     m_all += bytes;
-    if (m_all.size() > kMaxKept)
-        m_all.remove(0, m_all.size() - kMaxKept);
+    trimReceived(m_all);
     m_buffer += bytes;
     // The first answer whose expected bytes have come is sent; what came up to them is used.
     for (bool matched = true; matched;) {
@@ -301,8 +297,7 @@ void LineDevice::deliver(const QByteArray &bytes, int, qint64 atUs) {
             matched = true;
         }
     }
-    if (m_buffer.size() > kMaxKept)
-        m_buffer.remove(0, m_buffer.size() - kMaxKept);
+    trimReceived(m_buffer);
 }
 
 qint64 LineDevice::nextUs() const {

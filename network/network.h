@@ -46,6 +46,14 @@ using ProgramLoader =
     std::function<bool(const StationDescription &station, LoadedStation *loaded, QString *error)>;
 
 // What went over a wire, or what a group exchanged without frames.
+// What an end on a wire keeps of what it received and nobody took yet (a program that never
+// looks at its port, a device's log, a flood on the wire): the newest bytes, at most this many.
+inline constexpr qsizetype kMaxReceivedKept = 64 * 1024;
+inline void trimReceived(QByteArray &kept) {
+    if (kept.size() > kMaxReceivedKept)
+        kept.remove(0, kept.size() - kMaxReceivedKept);
+}
+
 struct TrafficRecord {
     qint64 startUs = 0;
     qint64 endUs = 0;

@@ -346,4 +346,15 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
     return true;
 }
 
+std::optional<HostPort> splitHostPort(const QString &where) {
+    const qsizetype colon = where.lastIndexOf(QLatin1Char(':'));
+    if (colon <= 0)
+        return std::nullopt;
+    bool ok = false;
+    const uint port = where.mid(colon + 1).toUInt(&ok);
+    if (!ok || port > 65535)
+        return std::nullopt;
+    return HostPort{where.left(colon), int(port)};
+}
+
 } // namespace rung::network

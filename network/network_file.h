@@ -52,6 +52,14 @@ struct BridgeDescription {
     friend bool operator==(const BridgeDescription &, const BridgeDescription &) = default;
 };
 
+// A TCP bridge's HOST:PORT split at its last colon (an IPv6 address keeps its own): none
+// when there is no host or the port is not a number of 0..65535.
+struct HostPort {
+    QString host;
+    int port = 0;
+};
+std::optional<HostPort> splitHostPort(const QString &where);
+
 struct FaultDescription {
     enum class Kind { Cut, Silent, Corrupt };
     Kind kind = Kind::Cut;

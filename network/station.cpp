@@ -11,14 +11,9 @@ namespace rung::network {
 
 namespace {
 
-// A port keeps at most this much received and not yet taken (a program that never looks at
-// its port, a flood on the wire).
-constexpr qsizetype kMaxKept = 64 * 1024;
-
 void keep(QByteArray &into, const QByteArray &bytes) {
     into += bytes;
-    if (into.size() > kMaxKept)
-        into.remove(0, into.size() - kMaxKept);
+    trimReceived(into);
 }
 
 } // namespace

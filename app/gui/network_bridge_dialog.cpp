@@ -90,16 +90,16 @@ NetworkBridgeDialog::NetworkBridgeDialog(const network::BridgeDescription &bridg
     connect(m_line->hostEdit(), &QLineEdit::textChanged, this, &NetworkBridgeDialog::check);
 
     // The bridge as it is.
-    const qsizetype colon = bridge.where.lastIndexOf(QLatin1Char(':'));
+    const std::optional<network::HostPort> hostPort = network::splitHostPort(bridge.where);
     switch (bridge.kind) {
     case BridgeKind::Serial:
         m_line->setPort(bridge.where);
         break;
     case BridgeKind::Tcp:
     case BridgeKind::Listen:
-        if (colon > 0) {
-            m_line->setHost(bridge.where.left(colon));
-            m_line->setTcpPort(bridge.where.mid(colon + 1).toInt());
+        if (hostPort) {
+            m_line->setHost(hostPort->host);
+            m_line->setTcpPort(hostPort->port);
         }
         break;
     case BridgeKind::Pty:

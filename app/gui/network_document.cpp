@@ -560,10 +560,7 @@ bool NetworkDocument::setBridge(const BridgeDescription &bridge,
     }
     if (bridge.kind == BridgeDescription::Kind::Tcp ||
         bridge.kind == BridgeDescription::Kind::Listen) {
-        const qsizetype colon = bridge.where.lastIndexOf(QLatin1Char(':'));
-        bool ok = false;
-        const uint port = colon >= 0 ? bridge.where.mid(colon + 1).toUInt(&ok) : 0;
-        if (colon <= 0 || !ok || port > 65535) {
+        if (!network::splitHostPort(bridge.where)) {
             *error = tr("\"%1\" is not HOST:PORT").arg(bridge.where);
             return false;
         }

@@ -104,6 +104,22 @@ TEST(Bridge, MastersConnectingOverTcpOneAfterTheOtherPollASimulatedSlave) {
     } // each client closes its connection here
 }
 
+// HOST:PORT, read in one place for the file, the bridge dialog and the lines: split at the
+// last colon (an IPv6 address keeps its own), a port of 0..65535, a host before it.
+TEST(Bridge, HostAndPortAreSplitAtTheLastColon) {
+    const auto a = splitHostPort(QStringLiteral("192.168.1.50:4001"));
+    ASSERT_TRUE(a);
+    EXPECT_EQ(a->host, QStringLiteral("192.168.1.50"));
+    EXPECT_EQ(a->port, 4001);
+    const auto b = splitHostPort(QStringLiteral("::1:502"));
+    ASSERT_TRUE(b);
+    EXPECT_EQ(b->host, QStringLiteral("::1"));
+    EXPECT_EQ(b->port, 502);
+    EXPECT_EQ(splitHostPort(QStringLiteral("0.0.0.0:0"))->port, 0);
+    for (const char *bad : {"plc", "plc:", ":502", "plc:70000", "plc:50x", "plc:-1"})
+        EXPECT_FALSE(splitHostPort(QString::fromLatin1(bad))) << bad;
+}
+
 TEST(Bridge, AListenAddressThatIsNotOneIsRefusedWithWhatAndWhere) {
     NetRun r = runNetwork(R"({"stations": [{"name": "plc", "program": "s.il", "model": "VB",
                               "ports": {"CP2": {"application": "modbus", "station": 1}}}]})",
