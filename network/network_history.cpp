@@ -58,6 +58,62 @@ void appendChangedWords(std::int32_t *old, const std::int32_t *now, std::size_t 
     walk(b, n);
 }
 
+constexpr std::uint32_t kRun = 0x80000000u; // a word change's index: a run follows
+
+// (index, value) pairs, indices rising, as Instant::changes keeps them: three or more
+// neighbours as one run.
+void encodeWordChanges(const std::vector<std::uint32_t> &pairs,
+                       std::vector<std::uint32_t> &changes) {
+    const std::size_t n = pairs.size();
+    const std::size_t at = changes.size();
+    changes.resize(at + n); // a run never takes more than its pairs
+    const std::uint32_t *in = pairs.data();
+    std::uint32_t *out = changes.data() + at;
+    for (std::size_t i = 0; i < n;) {
+        std::size_t e = i + 2; // the run [i, e) of neighbours
+        while (e < n && in[e] == in[e - 2] + 1)
+            e += 2;
+        if (e - i < 6) {
+            for (std::size_t k = i; k < e; ++k)
+                *out++ = in[k];
+        } else {
+            *out++ = in[i] | kRun;
+            *out++ = static_cast<std::uint32_t>((e - i) / 2);
+            for (std::size_t k = i + 1; k < e; k += 2)
+                *out++ = in[k];
+        }
+        i = e;
+    }
+    changes.resize(static_cast<std::size_t>(out - changes.data()));
+}
+
+// Calls f(index, value) for each word change of one station's part from c[p] (its length
+// first), and leaves p after it.
+template <typename F>
+void forEachWordChange(const std::vector<std::uint32_t> &c, std::size_t &p, F f) {
+    const std::size_t end = p + 1 + c[p];
+    ++p;
+    while (p < end) {
+        if (c[p] & kRun) {
+            const std::size_t first = c[p] & ~kRun;
+            const std::size_t count = c[p + 1];
+            for (std::size_t k = 0; k < count; ++k)
+                f(first + k, static_cast<std::int32_t>(c[p + 2 + k]));
+            p += 2 + count;
+        } else {
+            f(std::size_t(c[p]), static_cast<std::int32_t>(c[p + 1]));
+            p += 2;
+        }
+    }
+}
+
+// p from one station's part of Instant::changes to the next one's.
+void skipStation(const std::vector<std::uint32_t> &c, std::size_t &p) {
+    p += 4;
+    p += 1 + std::size_t(c[p]);
+    p += 1 + std::size_t(c[p]);
+}
+
 } // namespace
 
 struct NetworkHistory::Key {
@@ -85,6 +141,7 @@ struct NetworkHistory::Worker {
     std::size_t changeBytes = 0;        // bytes of changes since the last key
     std::size_t keyBytes = 0;           // what a key of every station costs
     std::vector<std::uint32_t> changes; // reused between instants
+    std::vector<std::uint32_t> pairs;   // one station's (index, value), reused
 };
 
 std::size_t NetworkHistory::Instant::bytes() const {
@@ -160,10 +217,12 @@ void NetworkHistory::record(const Network &network, bool commands) {
             prev.words.assign(words.begin(), words.end());
             key = true;
         }
+        w.pairs.clear();
+        appendChangedWords(prev.words.data(), words.data(), words.size(), w.pairs);
         const std::size_t countAt = changes.size();
         changes.push_back(0);
-        appendChangedWords(prev.words.data(), words.data(), words.size(), changes);
-        changes[countAt] = static_cast<std::uint32_t>((changes.size() - countAt - 1) / 2);
+        encodeWordChanges(w.pairs, changes);
+        changes[countAt] = static_cast<std::uint32_t>(changes.size() - countAt - 1);
         // The power flow of the station whose ladder is on screen (the others record none).
         const bool flowRecorded = engine.powerFlowRecording();
         const std::vector<std::uint8_t> &flow = engine.powerFlow();
@@ -276,19 +335,15 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
     for (std::size_t j = k + 1; j <= instant; ++j) {
         const std::vector<std::uint32_t> &c = m_instants[j].changes;
         std::size_t p = 0;
-        for (std::size_t t = 0; t < station; ++t) {
-            p += 4;
-            p += 1 + 2 * std::size_t(c[p]);
-            p += 1 + std::size_t(c[p]);
-        }
+        for (std::size_t t = 0; t < station; ++t)
+            skipStation(c, p);
         if (j == instant) {
             s.statistics.scans = c[p] | quint64(c[p + 1]) << 32;
             s.statistics.timeMs = static_cast<qint64>(c[p + 2] | quint64(c[p + 3]) << 32);
         }
         p += 4;
-        const std::size_t words = c[p++];
-        for (std::size_t n = 0; n < words; ++n, p += 2)
-            s.words[c[p]] = static_cast<std::int32_t>(c[p + 1]);
+        forEachWordChange(c, p,
+                          [&](std::size_t index, std::int32_t value) { s.words[index] = value; });
         const std::size_t toggles = c[p++];
         for (std::size_t n = 0; n < toggles; ++n, ++p)
             flow[c[p]] = flow[c[p]] ? 0 : 1;
@@ -348,18 +403,15 @@ std::vector<NetworkHistory::WordValue> NetworkHistory::wordValues(std::size_t st
         } else {
             const std::vector<std::uint32_t> &c = instant.changes;
             std::size_t p = 0;
-            for (std::size_t t = 0; t < station; ++t) {
-                p += 4;
-                p += 1 + 2 * std::size_t(c[p]);
-                p += 1 + std::size_t(c[p]);
-            }
+            for (std::size_t t = 0; t < station; ++t)
+                skipStation(c, p);
             now.scans = c[p] | quint64(c[p + 1]) << 32;
             now.timeMs = static_cast<qint64>(c[p + 2] | quint64(c[p + 3]) << 32);
             p += 4;
-            const std::size_t words = c[p++];
-            for (std::size_t n = 0; n < words; ++n, p += 2)
-                if (c[p] == word)
-                    now.value = static_cast<std::int32_t>(c[p + 1]);
+            forEachWordChange(c, p, [&](std::size_t index, std::int32_t value) {
+                if (index == word)
+                    now.value = value;
+            });
         }
         if (j >= first && (out.empty() || out.back().value != now.value))
             out.push_back(now);

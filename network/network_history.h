@@ -103,9 +103,11 @@ private:
         std::vector<model::ScanStatistics> statistics;
         std::vector<std::shared_ptr<const Key>> keys;
         // Per station, when not a key: [scans (2 words, low first), virtual ms (2 words),
-        // word changes n, (index, value) x n, flow changes m, index x m] (a flow change
-        // toggles that instruction's result). The other statistics (period, evaluation times)
-        // are the key's.
+        // length L of the word changes, L words of changes, flow changes m, index x m] (a flow
+        // change toggles that instruction's result). A word change is (index, value), or, for
+        // three or more neighbours that changed, (first | kRun, count, values): a busy
+        // program's registers side by side cost half. The other statistics (period, evaluation
+        // times) are the key's.
         std::vector<std::uint32_t> changes;
         std::size_t bytes() const;
     };

@@ -144,14 +144,19 @@ void expectWordValuesAsLive(const NetworkHistory &history, const std::vector<Liv
     EXPECT_EQ(untouched.us, -7);
 }
 
-// Busy programs: each of three stations in CPU Link counts 59 registers spread over its whole
-// image up every scan, at steps of its own, and toggles a bit.
+// Busy programs: each of three stations in CPU Link counts 59 registers up every scan, at
+// steps of its own, and toggles a bit: 27 registers spread over its whole image, two side by
+// side, 30 side by side (the history keeps neighbours as one run).
 std::unique_ptr<Network> busyNetwork() {
     std::map<QString, QString> programs;
     for (int k = 0; k < 3; ++k) {
         QString p = QStringLiteral("; target: vigor\nLDI M0\nOUT M0\nLD M9000\n");
         for (int r = 0; r < 59; ++r)
-            p += QStringLiteral("ADD D%1 K%2 D%1\n").arg(r * 130 + k).arg(r % 5 + k + 1);
+            p += QStringLiteral("ADD D%1 K%2 D%1\n")
+                     .arg(r < 27   ? r * 130 + k
+                          : r < 29 ? 3700 + r
+                                   : 4000 + r)
+                     .arg(r % 5 + k + 1);
         programs[QStringLiteral("p%1.il").arg(k)] = p + QStringLiteral("END\n");
     }
     NetworkDescription d;
