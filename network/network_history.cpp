@@ -118,12 +118,13 @@ void skipStation(const std::vector<std::uint32_t> &c, std::size_t &p) {
 
 struct NetworkHistory::Key {
     std::vector<std::int32_t> words;
-    std::vector<std::uint32_t> forceMask;
-    std::vector<std::uint32_t> forceValue;
+    // The forced bits, a mask and a value a word, kept for the words that have any: (index,
+    // mask, value) each (a key of the whole image would be three times its words).
+    std::vector<std::uint32_t> forces;
+    std::size_t forceWords = 0;     // the size of the snapshot's forceMask and forceValue
     std::vector<std::uint8_t> flow; // empty: power flow not recorded then
     std::size_t bytes() const {
-        return sizeof(Key) + words.size() * 4 + forceMask.size() * 4 + forceValue.size() * 4 +
-               flow.size();
+        return sizeof(Key) + words.size() * 4 + forces.size() * 4 + flow.size();
     }
 };
 
@@ -253,8 +254,20 @@ void NetworkHistory::record(const Network &network, bool commands) {
         for (const Worker::Station &s : w.stations) {
             auto k = std::make_shared<Key>();
             k->words = s.words;
-            k->forceMask = s.forceMask;
-            k->forceValue = s.forceValue;
+            k->forceWords = s.forceMask.size();
+            const std::uint32_t *mask = s.forceMask.data();
+            for (std::size_t b = 0; b < s.forceMask.size(); b += 64) {
+                const std::size_t e = std::min(s.forceMask.size(), b + 64);
+                std::uint32_t any = 0; // a block without forced bits at vector speed
+                for (std::size_t i = b; i < e; ++i)
+                    any |= mask[i];
+                if (any == 0)
+                    continue;
+                for (std::size_t i = b; i < e; ++i)
+                    if (mask[i] != 0)
+                        k->forces.insert(k->forces.end(),
+                                         {static_cast<std::uint32_t>(i), mask[i], s.forceValue[i]});
+            }
             k->flow = s.flow;
             keyBytes += k->bytes();
             instant.keys.push_back(std::move(k));
@@ -328,8 +341,12 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
     model::Snapshot s;
     s.layout = m_layouts[station];
     s.words = key.words;
-    s.forceMask = key.forceMask;
-    s.forceValue = key.forceValue;
+    s.forceMask.assign(key.forceWords, 0);
+    s.forceValue.assign(key.forceWords, 0);
+    for (std::size_t f = 0; f < key.forces.size(); f += 3) {
+        s.forceMask[key.forces[f]] = key.forces[f + 1];
+        s.forceValue[key.forces[f]] = key.forces[f + 2];
+    }
     s.statistics = m_instants[k].statistics[station];
     std::vector<std::uint8_t> flow = key.flow;
     for (std::size_t j = k + 1; j <= instant; ++j) {

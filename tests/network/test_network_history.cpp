@@ -58,6 +58,7 @@ model::Address historyAddress(const Station &s, const char *device) {
 struct SeenThen {
     std::vector<std::int32_t> words;
     std::vector<std::uint32_t> forceMask;
+    std::vector<std::uint32_t> forceValue;
     std::vector<bool> flow;
     quint64 scans = 0;
     qint64 timeMs = 0;
@@ -65,7 +66,8 @@ struct SeenThen {
 };
 
 SeenThen seenThen(const model::Snapshot &s) {
-    return {s.words, s.forceMask, s.powerFlow, s.statistics.scans, s.statistics.timeMs};
+    return {s.words,     s.forceMask,        s.forceValue,
+            s.powerFlow, s.statistics.scans, s.statistics.timeMs};
 }
 
 SeenThen seenThen(const Station &s) {
