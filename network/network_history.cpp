@@ -5,18 +5,126 @@
 #include "simulator/engine.h"
 
 #include <algorithm>
-#include <cstring>
 
 namespace rung::network {
 
+namespace {
+
+// Whether N words differ, in one pass the compiler vectorizes (inlined into the clones below,
+// it takes their instructions).
+template <std::size_t N>
+[[gnu::always_inline]] inline bool wordsDiffer(const std::int32_t *a, const std::int32_t *b) {
+    std::uint32_t d = 0;
+    for (std::size_t k = 0; k < N; ++k)
+        d |= static_cast<std::uint32_t>(a[k] ^ b[k]);
+    return d != 0;
+}
+
+// Appends (index, value) for every word of `now` that differs from `old`, and copies it into
+// `old`. A block of 64 words is compared in one pass of XOR and OR, which the compiler turns
+// into wide vector instructions (AVX2 where the processor has it: the function is compiled
+// twice, chosen when the program loads); a block that differs is looked at 8 words at a time
+// the same way, and those 8 written out without a branch a word. Comparing every station's
+// image is most of the recording's cost (BM_NetworkHistoryRatio, docs/performance.md): this
+// is about 3 instructions a 32 bytes; a memcmp a block and the loop around it were about 8.
+#if defined(__x86_64__) && (defined(__clang__) || defined(__GNUC__))
+[[gnu::target_clones("avx2", "default")]]
+#endif
+void appendChangedWords(std::int32_t *old, const std::int32_t *now, std::size_t n,
+                        std::vector<std::uint32_t> &changes) {
+    constexpr std::size_t kBlock = 64;
+    constexpr std::size_t kGroup = 8;
+    // Every word of [from, to) written as a pair, the cursor moved on only where it changed.
+    auto walk = [&](std::size_t from, std::size_t to) {
+        const std::size_t at = changes.size();
+        changes.resize(at + 2 * (to - from));
+        std::uint32_t *out = changes.data() + at;
+        for (std::size_t k = from; k < to; ++k) {
+            out[0] = static_cast<std::uint32_t>(k);
+            out[1] = static_cast<std::uint32_t>(now[k]);
+            out += old[k] != now[k] ? 2 : 0;
+            old[k] = now[k];
+        }
+        changes.resize(static_cast<std::size_t>(out - changes.data()));
+    };
+    std::size_t b = 0;
+    for (; b + kBlock <= n; b += kBlock) {
+        if (!wordsDiffer<kBlock>(old + b, now + b)) [[likely]]
+            continue;
+        for (std::size_t g = b; g < b + kBlock; g += kGroup)
+            if (wordsDiffer<kGroup>(old + g, now + g))
+                walk(g, g + kGroup);
+    }
+    walk(b, n);
+}
+
+constexpr std::uint32_t kRun = 0x80000000u; // a word change's index: a run follows
+
+// (index, value) pairs, indices rising, as Instant::changes keeps them: three or more
+// neighbours as one run.
+void encodeWordChanges(const std::vector<std::uint32_t> &pairs,
+                       std::vector<std::uint32_t> &changes) {
+    const std::size_t n = pairs.size();
+    const std::size_t at = changes.size();
+    changes.resize(at + n); // a run never takes more than its pairs
+    const std::uint32_t *in = pairs.data();
+    std::uint32_t *out = changes.data() + at;
+    for (std::size_t i = 0; i < n;) {
+        std::size_t e = i + 2; // the run [i, e) of neighbours
+        while (e < n && in[e] == in[e - 2] + 1)
+            e += 2;
+        if (e - i < 6) {
+            for (std::size_t k = i; k < e; ++k)
+                *out++ = in[k];
+        } else {
+            *out++ = in[i] | kRun;
+            *out++ = static_cast<std::uint32_t>((e - i) / 2);
+            for (std::size_t k = i + 1; k < e; k += 2)
+                *out++ = in[k];
+        }
+        i = e;
+    }
+    changes.resize(static_cast<std::size_t>(out - changes.data()));
+}
+
+// Calls f(index, value) for each word change of one station's part from c[p] (its length
+// first), and leaves p after it.
+template <typename F>
+void forEachWordChange(const std::vector<std::uint32_t> &c, std::size_t &p, F f) {
+    const std::size_t end = p + 1 + c[p];
+    ++p;
+    while (p < end) {
+        if (c[p] & kRun) {
+            const std::size_t first = c[p] & ~kRun;
+            const std::size_t count = c[p + 1];
+            for (std::size_t k = 0; k < count; ++k)
+                f(first + k, static_cast<std::int32_t>(c[p + 2 + k]));
+            p += 2 + count;
+        } else {
+            f(std::size_t(c[p]), static_cast<std::int32_t>(c[p + 1]));
+            p += 2;
+        }
+    }
+}
+
+// p from one station's part of Instant::changes to the next one's.
+void skipStation(const std::vector<std::uint32_t> &c, std::size_t &p) {
+    p += 4;
+    p += 1 + std::size_t(c[p]);
+    p += 1 + std::size_t(c[p]);
+}
+
+} // namespace
+
 struct NetworkHistory::Key {
     std::vector<std::int32_t> words;
-    std::vector<std::uint32_t> forceMask;
-    std::vector<std::uint32_t> forceValue;
+    // The forced bits, a mask and a value a word, kept for the words that have any: (index,
+    // mask, value) each (a key of the whole image would be three times its words).
+    std::vector<std::uint32_t> forces;
+    std::size_t forceWords = 0;     // the size of the snapshot's forceMask and forceValue
     std::vector<std::uint8_t> flow; // empty: power flow not recorded then
     std::size_t bytes() const {
-        return sizeof(Key) + words.size() * 4 + forceMask.size() * 4 + forceValue.size() * 4 +
-               flow.size();
+        return sizeof(Key) + words.size() * 4 + forces.size() * 4 + flow.size();
     }
 };
 
@@ -34,6 +142,7 @@ struct NetworkHistory::Worker {
     std::size_t changeBytes = 0;        // bytes of changes since the last key
     std::size_t keyBytes = 0;           // what a key of every station costs
     std::vector<std::uint32_t> changes; // reused between instants
+    std::vector<std::uint32_t> pairs;   // one station's (index, value), reused
 };
 
 std::size_t NetworkHistory::Instant::bytes() const {
@@ -66,6 +175,7 @@ void NetworkHistory::start(const Network &network) {
         m_bytes = 0;
         m_keys = 0;
         m_layouts = std::move(layouts);
+        ++m_generation;
     }
     *m_worker = Worker{};
     m_worker->stations.resize(network.stations().size());
@@ -102,29 +212,18 @@ void NetworkHistory::record(const Network &network, bool commands) {
                 key = true;
             }
         }
-        // The words that changed, a block at a time (a block compares at memcmp's speed; the
-        // few that differ are looked at word by word).
+        // The words that changed (appendChangedWords).
         const std::span<const std::int32_t> words = engine.words();
         if (prev.words.size() != words.size()) {
             prev.words.assign(words.begin(), words.end());
             key = true;
         }
+        w.pairs.clear();
+        appendChangedWords(prev.words.data(), words.data(), words.size(), w.pairs);
         const std::size_t countAt = changes.size();
         changes.push_back(0);
-        constexpr std::size_t kBlock = 64;
-        std::int32_t *old = prev.words.data();
-        for (std::size_t b = 0; b < words.size(); b += kBlock) {
-            const std::size_t e = std::min(words.size(), b + kBlock);
-            if (std::memcmp(old + b, words.data() + b, (e - b) * sizeof(std::int32_t)) == 0)
-                continue;
-            for (std::size_t k = b; k < e; ++k)
-                if (old[k] != words[k]) {
-                    old[k] = words[k];
-                    changes.push_back(static_cast<std::uint32_t>(k));
-                    changes.push_back(static_cast<std::uint32_t>(words[k]));
-                }
-        }
-        changes[countAt] = static_cast<std::uint32_t>((changes.size() - countAt - 1) / 2);
+        encodeWordChanges(w.pairs, changes);
+        changes[countAt] = static_cast<std::uint32_t>(changes.size() - countAt - 1);
         // The power flow of the station whose ladder is on screen (the others record none).
         const bool flowRecorded = engine.powerFlowRecording();
         const std::vector<std::uint8_t> &flow = engine.powerFlow();
@@ -155,8 +254,20 @@ void NetworkHistory::record(const Network &network, bool commands) {
         for (const Worker::Station &s : w.stations) {
             auto k = std::make_shared<Key>();
             k->words = s.words;
-            k->forceMask = s.forceMask;
-            k->forceValue = s.forceValue;
+            k->forceWords = s.forceMask.size();
+            const std::uint32_t *mask = s.forceMask.data();
+            for (std::size_t b = 0; b < s.forceMask.size(); b += 64) {
+                const std::size_t e = std::min(s.forceMask.size(), b + 64);
+                std::uint32_t any = 0; // a block without forced bits at vector speed
+                for (std::size_t i = b; i < e; ++i)
+                    any |= mask[i];
+                if (any == 0)
+                    continue;
+                for (std::size_t i = b; i < e; ++i)
+                    if (mask[i] != 0)
+                        k->forces.insert(k->forces.end(),
+                                         {static_cast<std::uint32_t>(i), mask[i], s.forceValue[i]});
+            }
             k->flow = s.flow;
             keyBytes += k->bytes();
             instant.keys.push_back(std::move(k));
@@ -230,26 +341,26 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
     model::Snapshot s;
     s.layout = m_layouts[station];
     s.words = key.words;
-    s.forceMask = key.forceMask;
-    s.forceValue = key.forceValue;
+    s.forceMask.assign(key.forceWords, 0);
+    s.forceValue.assign(key.forceWords, 0);
+    for (std::size_t f = 0; f < key.forces.size(); f += 3) {
+        s.forceMask[key.forces[f]] = key.forces[f + 1];
+        s.forceValue[key.forces[f]] = key.forces[f + 2];
+    }
     s.statistics = m_instants[k].statistics[station];
     std::vector<std::uint8_t> flow = key.flow;
     for (std::size_t j = k + 1; j <= instant; ++j) {
         const std::vector<std::uint32_t> &c = m_instants[j].changes;
         std::size_t p = 0;
-        for (std::size_t t = 0; t < station; ++t) {
-            p += 4;
-            p += 1 + 2 * std::size_t(c[p]);
-            p += 1 + std::size_t(c[p]);
-        }
+        for (std::size_t t = 0; t < station; ++t)
+            skipStation(c, p);
         if (j == instant) {
             s.statistics.scans = c[p] | quint64(c[p + 1]) << 32;
             s.statistics.timeMs = static_cast<qint64>(c[p + 2] | quint64(c[p + 3]) << 32);
         }
         p += 4;
-        const std::size_t words = c[p++];
-        for (std::size_t n = 0; n < words; ++n, p += 2)
-            s.words[c[p]] = static_cast<std::int32_t>(c[p + 1]);
+        forEachWordChange(c, p,
+                          [&](std::size_t index, std::int32_t value) { s.words[index] = value; });
         const std::size_t toggles = c[p++];
         for (std::size_t n = 0; n < toggles; ++n, ++p)
             flow[c[p]] = flow[c[p]] ? 0 : 1;
@@ -275,6 +386,56 @@ std::optional<model::Snapshot> NetworkHistory::stationAt(std::size_t station, qi
     if (i < 0 || station >= m_layouts.size())
         return std::nullopt;
     return rebuild(station, static_cast<std::size_t>(i));
+}
+
+std::uint64_t NetworkHistory::generation() const {
+    std::lock_guard lock(m_mutex);
+    return m_generation;
+}
+
+std::vector<NetworkHistory::WordValue> NetworkHistory::wordValues(std::size_t station,
+                                                                  std::size_t word, qint64 afterUs,
+                                                                  WordValue *newest) const {
+    std::vector<WordValue> out;
+    std::lock_guard lock(m_mutex);
+    if (station >= m_layouts.size())
+        return out;
+    const std::size_t first = static_cast<std::size_t>(find(afterUs) + 1);
+    if (first >= m_instants.size())
+        return out;
+    // From the key at or before the first instant wanted (the front is always a key).
+    std::size_t k = first;
+    while (m_instants[k].keys.empty())
+        --k;
+    if (word >= m_instants[k].keys[station]->words.size())
+        return out;
+    WordValue now;
+    for (std::size_t j = k; j < m_instants.size(); ++j) {
+        const Instant &instant = m_instants[j];
+        now.us = instant.us;
+        if (!instant.keys.empty()) {
+            now.value = instant.keys[station]->words[word];
+            now.scans = instant.statistics[station].scans;
+            now.timeMs = instant.statistics[station].timeMs;
+        } else {
+            const std::vector<std::uint32_t> &c = instant.changes;
+            std::size_t p = 0;
+            for (std::size_t t = 0; t < station; ++t)
+                skipStation(c, p);
+            now.scans = c[p] | quint64(c[p + 1]) << 32;
+            now.timeMs = static_cast<qint64>(c[p + 2] | quint64(c[p + 3]) << 32);
+            p += 4;
+            forEachWordChange(c, p, [&](std::size_t index, std::int32_t value) {
+                if (index == word)
+                    now.value = value;
+            });
+        }
+        if (j >= first && (out.empty() || out.back().value != now.value))
+            out.push_back(now);
+    }
+    if (newest)
+        *newest = now;
+    return out;
 }
 
 } // namespace rung::network

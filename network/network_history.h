@@ -19,9 +19,10 @@
 // the changes since the last one have cost as much as a key, and whenever a station's forced
 // bits or its power-flow recording changed, so a rebuild applies at most keyEvery changes.
 //
-// Cost: finding the changed words reads every station's whole image each slice, which at full
-// speed costs more than the scans themselves (BM_NetworkHistoryRatio, docs/performance.md: the
-// engine does not say which words a scan wrote).
+// Cost: finding the changed words reads every station's whole image each slice (a vectorized
+// pass a block of 64 words), which at full speed costs about as much as the scans themselves
+// (BM_NetworkHistoryRatio, docs/performance.md: the engine does not say which words a scan
+// wrote).
 //
 // Threads: the session's worker records (start, record); any thread reads (window, at,
 // stationAt) under the history's lock, which the worker takes only to append an instant.
@@ -78,6 +79,22 @@ public:
     // The virtual time of the instant `at(us)` shows; empty before the window.
     std::optional<qint64> instantAt(qint64 us) const;
 
+    // One image word of one station through the instants after virtual time `afterUs`,
+    // oldest first: its value at the first of them, then each instant at which it changed
+    // (a chart row added after the fact reads its past here). *newest: the newest instant
+    // read (left as it is when there is none); a later call goes on after its `us`.
+    struct WordValue {
+        qint64 us = 0;     // the instant
+        quint64 scans = 0; // the station's statistics then
+        qint64 timeMs = 0;
+        std::int32_t value = 0;
+        friend bool operator==(const WordValue &, const WordValue &) = default;
+    };
+    std::vector<WordValue> wordValues(std::size_t station, std::size_t word, qint64 afterUs,
+                                      WordValue *newest = nullptr) const;
+    // Counts start(): what was read of an older run (before Stop) is not this one's.
+    std::uint64_t generation() const;
+
 private:
     struct Key; // a full copy of one station
     struct Instant {
@@ -86,9 +103,11 @@ private:
         std::vector<model::ScanStatistics> statistics;
         std::vector<std::shared_ptr<const Key>> keys;
         // Per station, when not a key: [scans (2 words, low first), virtual ms (2 words),
-        // word changes n, (index, value) x n, flow changes m, index x m] (a flow change
-        // toggles that instruction's result). The other statistics (period, evaluation times)
-        // are the key's.
+        // length L of the word changes, L words of changes, flow changes m, index x m] (a flow
+        // change toggles that instruction's result). A word change is (index, value), or, for
+        // three or more neighbours that changed, (first | kRun, count, values): a busy
+        // program's registers side by side cost half. The other statistics (period, evaluation
+        // times) are the key's.
         std::vector<std::uint32_t> changes;
         std::size_t bytes() const;
     };
@@ -106,6 +125,7 @@ private:
     std::vector<std::shared_ptr<const model::MemoryLayout>> m_layouts;
     std::size_t m_bytes = 0;
     std::size_t m_keys = 0;
+    std::uint64_t m_generation = 0;
 };
 
 } // namespace rung::network

@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rung::app {
@@ -82,6 +83,7 @@ void NetworkChart::setSession(network::NetworkSession *session) {
     m_session = session;
     m_channels.clear();
     m_stations.clear();
+    m_past.clear();
     m_canvas->setChannels(&m_channels);
     if (session)
         connect(session, &network::NetworkSession::clockChanged, this, &NetworkChart::refresh);
@@ -139,6 +141,7 @@ bool NetworkChart::addDevice(const QString &text) {
     }
     m_channels.push_back(c);
     m_stations.emplace_back(station);
+    m_past.emplace_back();
     m_canvas->setChannels(&m_channels);
     refresh();
     return true;
@@ -149,6 +152,7 @@ void NetworkChart::removeRow(int row) {
         return;
     m_channels.erase(m_channels.begin() + row);
     m_stations.erase(m_stations.begin() + row);
+    m_past.erase(m_past.begin() + row);
     m_canvas->setSelectedRow(-1);
     m_canvas->setChannels(&m_channels);
     refresh();
@@ -161,11 +165,49 @@ QStringList NetworkChart::devices() const {
     return out;
 }
 
+void NetworkChart::readPast(std::size_t row, qint64 recorderFromMs) {
+    Past &past = m_past[row];
+    network::StationSource *station = m_stations[row];
+    const std::shared_ptr<const network::NetworkHistory> history =
+        m_session ? m_session->history() : nullptr;
+    if (!station || !history)
+        return;
+    const std::uint64_t generation = history->generation();
+    if (past.generation != generation)
+        past = Past{generation}; // Stop: the network started again
+    // Read on until the recorder's first value (new instants only, each refresh).
+    if (recorderFromMs >= 0 && past.throughMs >= recorderFromMs)
+        return;
+    const auto &all = m_session->stations();
+    const auto index =
+        static_cast<std::size_t>(std::find(all.begin(), all.end(), station) - all.begin());
+    const model::Address address = m_channels[row].address;
+    int word = -1;
+    station->readHistory([&](const model::HistoryRecorder &h) { word = h.wordOf(address); });
+    if (word < 0 || index >= all.size())
+        return;
+    network::NetworkHistory::WordValue newest;
+    const auto values =
+        history->wordValues(index, static_cast<std::size_t>(word), past.throughUs, &newest);
+    if (values.empty())
+        return;
+    station->readHistory([&](const model::HistoryRecorder &h) {
+        for (const network::NetworkHistory::WordValue &v : values) {
+            const model::HistoryRecorder::Change c{v.scans, v.timeMs, h.valueIn(address, v.value)};
+            if (past.changes.empty() || past.changes.back().value != c.value)
+                past.changes.push_back(c);
+        }
+    });
+    past.throughUs = newest.us;
+    past.throughMs = newest.timeMs;
+}
+
 void NetworkChart::refresh() {
     const qint64 now = m_session ? m_session->nowUs() / 1000 : 0;
     if (m_follow->isChecked())
         m_endMs = std::max<qint64>(now, std::llround(m_canvas->waveWidth() * m_msPerPixel));
     m_canvas->setView(m_endMs, m_msPerPixel);
+    using Change = model::HistoryRecorder::Change;
     // One window over every row: each row read from its own station's history.
     model::TimingWindow window;
     window.fromMs = m_canvas->fromMs();
@@ -174,9 +216,30 @@ void NetworkChart::refresh() {
         model::TimingWindow one;
         if (m_stations[k])
             one = model::readWindow(*m_stations[k], {m_channels[k]}, window.fromMs, window.toMs);
-        window.changes.push_back(one.changes.empty() ? std::vector<model::HistoryRecorder::Change>{}
-                                                     : one.changes.front());
-        window.knownFromMs.push_back(one.knownFromMs.empty() ? -1 : one.knownFromMs.front());
+        std::vector<Change> changes =
+            one.changes.empty() ? std::vector<Change>{} : std::move(one.changes.front());
+        qint64 knownFromMs = one.knownFromMs.empty() ? -1 : one.knownFromMs.front();
+        // Before the recorder's first value: the network's history.
+        readPast(k, knownFromMs);
+        const std::vector<Change> &past = m_past[k].changes;
+        if (!past.empty() && (knownFromMs < 0 || knownFromMs > window.fromMs)) {
+            std::vector<Change> merged;
+            for (const Change &c : past) {
+                if ((knownFromMs >= 0 && c.timeMs >= knownFromMs) || c.timeMs > window.toMs)
+                    break;
+                if (c.timeMs <= window.fromMs)
+                    merged.assign(1, c); // the value the window starts with
+                else
+                    merged.push_back(c);
+            }
+            for (const Change &c : changes)
+                if (merged.empty() || merged.back().value != c.value)
+                    merged.push_back(c);
+            changes = std::move(merged);
+            knownFromMs = past.front().timeMs;
+        }
+        window.changes.push_back(std::move(changes));
+        window.knownFromMs.push_back(knownFromMs);
     }
     m_window = window;
     m_canvas->setWindow(window);

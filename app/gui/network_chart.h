@@ -3,8 +3,11 @@
 // The timing chart of a network: bits and words of any station on one time axis ("s5/D10"
 // beside "master/D0"), so a value is seen leaving one PLC and arriving in another, with the
 // scans between. Each row reads its station's history (network_session.h: every station
-// records the devices asked for); the drawing is the single program's chart's canvas
-// (editor/timing_canvas.h): zoom with Ctrl+wheel, scroll with the wheel, two cursors.
+// records the devices asked for, from the scan after it was asked); what ran before that, a
+// row added after the fact reads from the network's history (network_history.h: every
+// station's words at every slice, as far as it reaches back). The drawing is the single program's
+// chart's canvas (editor/timing_canvas.h): zoom with Ctrl+wheel, scroll with the wheel, two
+// cursors.
 
 #include "model/image/timing_data.h"
 
@@ -58,10 +61,20 @@ protected:
 private:
     void retranslate();
     void refresh();
+    // A row's values from before its station's recorder knew them, read from the network's
+    // history as far as the recorder's first value (recorderFromMs, -1: none yet).
+    struct Past {
+        std::uint64_t generation = 0; // NetworkHistory::generation() it was read from
+        qint64 throughUs = -1;        // the newest instant read
+        qint64 throughMs = -1;        // the station's virtual time then
+        std::vector<model::HistoryRecorder::Change> changes;
+    };
+    void readPast(std::size_t row, qint64 recorderFromMs);
 
     QPointer<network::NetworkSession> m_session;
     std::vector<model::TimingChannel> m_channels; // device "s5/D10"
     std::vector<QPointer<network::StationSource>> m_stations;
+    std::vector<Past> m_past; // per row
     model::TimingWindow m_window;
     editor::TimingCanvas *m_canvas;
     QLineEdit *m_add;

@@ -35,6 +35,10 @@ int HistoryRecorder::wordOf(const Address &address) const {
     return deviceOf(address).word;
 }
 
+std::int32_t HistoryRecorder::valueIn(const Address &address, std::int32_t word) const {
+    return read(deviceOf(address), word);
+}
+
 bool HistoryRecorder::watch(const Address &address) {
     if (find(address) >= 0)
         return true;
@@ -136,12 +140,9 @@ bool HistoryRecorder::record(quint64 scan, qint64 timeMs, const std::int32_t *wo
             r.head = (r.head + 1) % m_capacity;
         }
     };
-    auto read = [&](const Device &d) {
-        const std::int32_t w = words[d.word];
-        return d.mask ? std::int32_t((static_cast<std::uint32_t>(w) & d.mask) != 0) : w;
-    };
+    auto value = [&](const Device &d) { return read(d, words[d.word]); };
     for (int i : m_fresh)
-        push(static_cast<std::size_t>(i), read(m_devices[static_cast<std::size_t>(i)]));
+        push(static_cast<std::size_t>(i), value(m_devices[static_cast<std::size_t>(i)]));
     m_fresh.clear();
     for (const WordRun &run : m_wordRuns) {
         const std::int32_t *now = words + run.word;
@@ -157,7 +158,7 @@ bool HistoryRecorder::record(quint64 scan, qint64 timeMs, const std::int32_t *wo
             const auto j = static_cast<std::size_t>(run.first + r);
             for (int k = m_wordFirst[j]; k < m_wordFirst[j + 1]; ++k) {
                 const auto i = static_cast<std::size_t>(m_wordDevices[static_cast<std::size_t>(k)]);
-                const std::int32_t v = read(m_devices[i]);
+                const std::int32_t v = value(m_devices[i]);
                 if (v != m_last[i])
                     push(i, v);
             }

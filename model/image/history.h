@@ -41,6 +41,9 @@ public:
     bool watch(const Address &address);
     // The image word a device's values are recorded from; -1 when it cannot be recorded.
     int wordOf(const Address &address) const;
+    // The device's value as recorded, read from its image word (wordOf) holding `word`: a
+    // bit's 0/1, else the word (values of the device read elsewhere, as a network's history).
+    std::int32_t valueIn(const Address &address, std::int32_t word) const;
     int deviceCount() const { return static_cast<int>(m_devices.size()); }
     std::size_t changesPerDevice() const { return m_capacity; }
     void clear(); // forgets the past, keeps the watched devices
@@ -91,6 +94,9 @@ private:
     };
 
     int find(const Address &address) const;
+    static std::int32_t read(const Device &d, std::int32_t word) {
+        return d.mask ? std::int32_t((static_cast<std::uint32_t>(word) & d.mask) != 0) : word;
+    }
     Device deviceOf(const Address &address) const; // word -1: cannot be recorded
     void rebuildWords();
     template <typename Key> std::optional<std::int32_t> valueAt(int device, Key key) const;

@@ -21,8 +21,8 @@
 #include "network/network_session.h"
 
 #include <QDockWidget>
-#include <QScrollBar>
 #include <QLabel>
+#include <QScrollBar>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTableView>
@@ -210,6 +210,76 @@ TEST(NetworkHistoryWindow, AFrameChosenInTheTrafficViewShowsItsInstantAndReturnT
     ASSERT_TRUE(history->historyShown());
     toolbarAction(*net, QStringLiteral("Stop"))->trigger();
     EXPECT_FALSE(history->historyShown());
+}
+
+// The value a chart row draws at virtual time t: its last change at or before t.
+std::optional<std::int32_t> rowValueAt(const std::vector<model::HistoryRecorder::Change> &row,
+                                       qint64 t) {
+    std::optional<std::int32_t> v;
+    for (const auto &c : row)
+        if (c.timeMs <= t)
+            v = c.value;
+    return v;
+}
+
+// A row added to the timing chart after the network ran shows what its station had from the
+// start, read from the network's history, scan by scan; then its station's recorder goes on.
+TEST(NetworkHistoryWindow, AChartRowAddedAfterTheNetworkRanShowsItsPastFromTheNetworksHistory) {
+    NetworkPastFixture f;
+    f.open();
+    app::NetworkWindow *net = f.net;
+    net->resize(1366, 768);
+    net->show();
+    f.runWithVr1(50, 1000);
+    f.runWithVr1(200, 1000);
+    app::NetworkChart *chart = net->chart();
+    ASSERT_TRUE(chart->addDevice(QStringLiteral("slave1/D0")));    // 0, 50, 200
+    ASSERT_TRUE(chart->addDevice(QStringLiteral("slave1/M9002"))); // on in the first scan
+    const model::TimingWindow &w = chart->window();
+    ASSERT_EQ(w.changes.size(), 2u);
+    ASSERT_LE(w.fromMs, 0);
+    ASSERT_GE(w.toMs, 2000);
+    EXPECT_EQ(w.knownFromMs, (std::vector<qint64>{0, 0}));
+    std::vector<std::int32_t> values;
+    for (const auto &c : w.changes[0])
+        values.push_back(c.value);
+    EXPECT_EQ(values, (std::vector<std::int32_t>{0, 50, 200}));
+    values.clear();
+    for (const auto &c : w.changes[1])
+        values.push_back(c.value);
+    EXPECT_EQ(values, (std::vector<std::int32_t>{0, 1, 0}));
+    // Every 10 ms slice: the rows' values are the station's then.
+    const auto &stations = net->session()->stations();
+    const auto index =
+        std::size_t(std::find(stations.begin(), stations.end(), f.slave1) - stations.begin());
+    const auto history = net->session()->history();
+    const model::Address d0 = f.at(f.slave1, "D0");
+    const model::Address m9002 = f.at(f.slave1, "M9002");
+    for (qint64 t = 0; t <= 2000; t += 10) {
+        const auto then = history->stationAt(index, t * 1000);
+        ASSERT_TRUE(then) << t;
+        const std::int32_t v = then->value(d0);
+        EXPECT_EQ(rowValueAt(w.changes[0], t), v) << t;
+        EXPECT_EQ(rowValueAt(w.changes[1], t), then->bit(m9002) ? 1 : 0) << t;
+    }
+    // Running on, the station's recorder goes on from there; the past stays.
+    f.runWithVr1(7, 500);
+    ASSERT_TRUE(eventually([&] {
+        const auto &row = chart->window().changes.at(0);
+        return !row.empty() && row.back().value == 7;
+    }));
+    values.clear();
+    for (const auto &c : chart->window().changes[0])
+        values.push_back(c.value);
+    EXPECT_EQ(values, (std::vector<std::int32_t>{0, 50, 200, 7}));
+    EXPECT_EQ(chart->window().knownFromMs.at(0), 0);
+    // Stop: the network and its history start again; the old run's past is not drawn.
+    toolbarAction(*net, QStringLiteral("Stop"))->trigger();
+    ASSERT_TRUE(eventually([&] { return net->session()->nowUs() == 0; }));
+    emit chart->canvas()->cursorRequested(1, 0); // a refresh
+    for (const auto &row : chart->window().changes)
+        for (const auto &c : row)
+            EXPECT_EQ(c.value, 0);
 }
 
 // At 1366 x 768, in English, Hungarian and Italian, the history's mark stands whole in the

@@ -58,6 +58,7 @@ model::Address historyAddress(const Station &s, const char *device) {
 struct SeenThen {
     std::vector<std::int32_t> words;
     std::vector<std::uint32_t> forceMask;
+    std::vector<std::uint32_t> forceValue;
     std::vector<bool> flow;
     quint64 scans = 0;
     qint64 timeMs = 0;
@@ -65,7 +66,8 @@ struct SeenThen {
 };
 
 SeenThen seenThen(const model::Snapshot &s) {
-    return {s.words, s.forceMask, s.powerFlow, s.statistics.scans, s.statistics.timeMs};
+    return {s.words,     s.forceMask,        s.forceValue,
+            s.powerFlow, s.statistics.scans, s.statistics.timeMs};
 }
 
 SeenThen seenThen(const Station &s) {
@@ -107,6 +109,75 @@ void expectHistoryShownAsLive(const NetworkHistory &history, const std::vector<L
     }
 }
 
+// What wordValues must say of one word of one station, from the live instants after afterUs:
+// the value at the first, then each instant at which it changed.
+std::vector<NetworkHistory::WordValue> liveWordValues(const std::vector<LiveInstant> &live,
+                                                      std::size_t station, std::size_t word,
+                                                      qint64 afterUs) {
+    std::vector<NetworkHistory::WordValue> out;
+    for (std::size_t k = 0; k < live.size(); ++k) {
+        if (live[k].us <= afterUs)
+            continue;
+        const SeenThen &s = live[k].stations[station];
+        if (out.empty() || out.back().value != s.words[word])
+            out.push_back({live[k].us, s.scans, s.timeMs, s.words[word]});
+    }
+    return out;
+}
+
+// Every word that changed of every station, read back one word at a time: whole, and going on
+// from an instant in the middle.
+void expectWordValuesAsLive(const NetworkHistory &history, const std::vector<LiveInstant> &live) {
+    const qint64 middle = live[live.size() / 2].us;
+    for (std::size_t s = 0; s < live.front().stations.size(); ++s)
+        for (std::size_t w = 0; w < live.front().stations[s].words.size(); ++w) {
+            const auto all = liveWordValues(live, s, w, -1);
+            if (all.size() < 2)
+                continue;
+            NetworkHistory::WordValue newest;
+            ASSERT_EQ(history.wordValues(s, w, -1, &newest), all)
+                << "station " << s << " word " << w;
+            EXPECT_EQ(newest.us, live.back().us);
+            EXPECT_EQ(history.wordValues(s, w, middle), liveWordValues(live, s, w, middle))
+                << "station " << s << " word " << w;
+        }
+    NetworkHistory::WordValue untouched{-7, 0, 0, 0};
+    EXPECT_TRUE(history.wordValues(0, 0, live.back().us, &untouched).empty());
+    EXPECT_EQ(untouched.us, -7);
+}
+
+// Busy programs: each of three stations in CPU Link counts 59 registers up every scan, at
+// steps of its own, and toggles a bit: 27 registers spread over its whole image, two side by
+// side, 30 side by side (the history keeps neighbours as one run).
+std::unique_ptr<Network> busyNetwork() {
+    std::map<QString, QString> programs;
+    for (int k = 0; k < 3; ++k) {
+        QString p = QStringLiteral("; target: vigor\nLDI M0\nOUT M0\nLD M9000\n");
+        for (int r = 0; r < 59; ++r)
+            p += QStringLiteral("ADD D%1 K%2 D%1\n")
+                     .arg(r < 27   ? r * 130 + k
+                          : r < 29 ? 3700 + r
+                                   : 4000 + r)
+                     .arg(r % 5 + k + 1);
+        programs[QStringLiteral("p%1.il").arg(k)] = p + QStringLiteral("END\n");
+    }
+    NetworkDescription d;
+    QString error;
+    EXPECT_TRUE(parseNetwork(QByteArrayLiteral(R"({"stations": [
+        {"name": "s0", "program": "p0.il", "model": "VB",
+         "ports": {"CP2": {"application": "cpu-link", "station": 0, "slaves": 2, "range": 1}}},
+        {"name": "s1", "program": "p1.il", "model": "VB",
+         "ports": {"CP2": {"application": "cpu-link", "station": 1}}},
+        {"name": "s2", "program": "p2.il", "model": "VB",
+         "ports": {"CP2": {"application": "cpu-link", "station": 2}}}],
+        "wires": [["s0/CP2", "s1/CP2", "s2/CP2"]]})"),
+                             QStringLiteral("busy.rungnet"), &d, &error))
+        << error.toStdString();
+    std::unique_ptr<Network> net = Network::build(d, listingLoader(programs), &error);
+    EXPECT_TRUE(net) << error.toStdString();
+    return net;
+}
+
 } // namespace
 
 TEST(NetworkHistory, EveryStationOfEveryExampleNetworkIsShownAsItWasAtEachInstant) {
@@ -132,6 +203,7 @@ TEST(NetworkHistory, EveryStationOfEveryExampleNetworkIsShownAsItWasAtEachInstan
             live.push_back(captureLive(*net));
         }
         expectHistoryShownAsLive(history, live);
+        expectWordValuesAsLive(history, live);
         EXPECT_FALSE(history.at(-1));
         const NetworkHistory::Window w = history.window();
         EXPECT_EQ(w.firstUs, 0);
@@ -142,6 +214,34 @@ TEST(NetworkHistory, EveryStationOfEveryExampleNetworkIsShownAsItWasAtEachInstan
         for (std::size_t s = 0; s < live.front().stations.size(); ++s)
             changed = changed || live.front().stations[s].words != live.back().stations[s].words;
         EXPECT_TRUE(changed);
+    }
+}
+
+// Busy stations, every scan recorded: what is read back is what ran, scan by scan, every word
+// of every station (keys far apart and close together).
+TEST(NetworkHistory, BusyStationsAreShownAsTheyWereAtEveryScan) {
+    for (const std::size_t keyEvery : {std::size_t(1000), std::size_t(7)}) {
+        SCOPED_TRACE(keyEvery);
+        std::unique_ptr<Network> net = busyNetwork();
+        ASSERT_TRUE(net);
+        NetworkHistory history(NetworkHistory::Limits{256u << 20, keyEvery});
+        history.start(*net);
+        std::vector<LiveInstant> live{captureLive(*net)};
+        for (int k = 1; k <= 250; ++k) {
+            net->runUntil(k * 10'000);
+            history.record(*net, false);
+            live.push_back(captureLive(*net));
+        }
+        // Busy indeed: 59 registers and a bit of each station changed in every scan, beside
+        // what the CPU Link and the system words changed.
+        for (std::size_t s = 0; s < 3; ++s) {
+            std::size_t changed = 0;
+            for (std::size_t w = 0; w < live[100].stations[s].words.size(); ++w)
+                changed += live[100].stations[s].words[w] != live[101].stations[s].words[w];
+            EXPECT_GE(changed, 60u) << s;
+        }
+        expectHistoryShownAsLive(history, live);
+        expectWordValuesAsLive(history, live);
     }
 }
 
