@@ -2366,7 +2366,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+69"/>
+        <location filename="../app/gui/network_chart.cpp" line="+70"/>
         <source>Follow</source>
         <translation>Követés</translation>
     </message>
@@ -2381,7 +2381,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Írjon be fent egy állomás operandusát (%1) a kirajzolásához</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>%1: write STATION/DEVICE, e.g. %2 (stations: %3)</source>
         <translation>%1: ÁLLOMÁS/OPERANDUS alakban írja, pl. %2 (állomások: %3)</translation>
     </message>
@@ -2396,7 +2396,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 nem őrzi %2 előzményeit</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+108"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -2725,7 +2725,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>A híd (%1) célját meg kell adni</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
         <source>&quot;%1&quot; is not HOST:PORT</source>
         <translation>„%1” nem GÉP:PORT alakú</translation>
     </message>
@@ -3581,7 +3581,7 @@ Menti mégis, ezek nélkül?</translation>
     <message>
         <location line="+2"/>
         <source>Save Network &amp;As...</source>
-        <translation>Hálózat mentése &amp;másként...</translation>
+        <translation>Hálózat mentése más&amp;ként...</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -3615,7 +3615,7 @@ Menti mégis, ezek nélkül?</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Network &amp;Period...</source>
+        <source>Network Peri&amp;od...</source>
         <translation>Hálózati &amp;ciklusidő...</translation>
     </message>
     <message>
@@ -3673,7 +3673,7 @@ Menti mégis, ezek nélkül?</translation>
     <message>
         <location line="+8"/>
         <source>Spee&amp;d</source>
-        <translation>Se&amp;besség</translation>
+        <translation>Sebessé&amp;g</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -3693,7 +3693,7 @@ Menti mégis, ezek nélkül?</translation>
     <message>
         <location line="+14"/>
         <source>F&amp;aults</source>
-        <translation>&amp;Hibák</translation>
+        <translation>H&amp;ibák</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -11196,7 +11196,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::Devices</name>
     <message>
-        <location filename="../network/devices.cpp" line="+22"/>
+        <location filename="../network/devices.cpp" line="+19"/>
         <source>%1.baud: needs a rate from 50 to 1000000</source>
         <translation>%1.baud: 50 és 1000000 közötti átviteli sebesség kell</translation>
     </message>
@@ -11304,17 +11304,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: nincs „%2” állomásport</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+34"/>
         <source>%1.tcp: &quot;%2&quot; is not HOST:PORT</source>
         <translation>%1.tcp: a(z) „%2” nem HOST:PORT alakú</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+15"/>
         <source>%1.listen: &quot;%2&quot; is not ADDRESS:PORT (an IP address of this machine, 0.0.0.0 for all, or localhost)</source>
         <translation>%1.listen: a(z) „%2” nem CÍM:PORT alakú (a gép egy IP-címe, 0.0.0.0 mindegyikhez, vagy localhost)</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-50"/>
         <source>no station port &quot;%1&quot;</source>
         <translation>nincs „%1” állomásport</translation>
     </message>
@@ -11599,7 +11599,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::SharedLink</name>
     <message>
-        <location filename="../network/shared_link.cpp" line="+222"/>
+        <location filename="../network/shared_link.cpp" line="+251"/>
         <source>CPU Link exchange among %1 (%2 ms); no frames: the manual does not publish them</source>
         <translation>CPU Link adatcsere: %1 (%2 ms); keretek nélkül: a kézikönyv nem közli őket</translation>
     </message>

@@ -2373,7 +2373,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+69"/>
+        <location filename="../app/gui/network_chart.cpp" line="+70"/>
         <source>Follow</source>
         <translation>Segui</translation>
     </message>
@@ -2388,7 +2388,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Scrivere sopra un operando di una stazione (%1) per disegnarlo</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>%1: write STATION/DEVICE, e.g. %2 (stations: %3)</source>
         <translation>%1: scrivere STAZIONE/OPERANDO, ad es. %2 (stazioni: %3)</translation>
     </message>
@@ -2403,7 +2403,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 non conserva la storia di %2</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+108"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -2732,7 +2732,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>Un ponte (%1) ha bisogno della destinazione</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
         <source>&quot;%1&quot; is not HOST:PORT</source>
         <translation>&quot;%1&quot; non è HOST:PORTA</translation>
     </message>
@@ -3589,7 +3589,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
     <message>
         <location line="+2"/>
         <source>Save Network &amp;As...</source>
-        <translation>Salva la rete &amp;come...</translation>
+        <translation>Salva la rete c&amp;ome...</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -3623,8 +3623,8 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Network &amp;Period...</source>
-        <translation>&amp;Periodo della rete...</translation>
+        <source>Network Peri&amp;od...</source>
+        <translation>Peri&amp;odo della rete...</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3660,7 +3660,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
     <message>
         <location line="+5"/>
         <source>Run &amp;For...</source>
-        <translation>Esegui &amp;per...</translation>
+        <translation>Esegui pe&amp;r...</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -11219,7 +11219,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::Devices</name>
     <message>
-        <location filename="../network/devices.cpp" line="+22"/>
+        <location filename="../network/devices.cpp" line="+19"/>
         <source>%1.baud: needs a rate from 50 to 1000000</source>
         <translation>%1.baud: richiede una velocità da 50 a 1000000</translation>
     </message>
@@ -11327,17 +11327,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: nessuna porta di stazione &quot;%2&quot;</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+34"/>
         <source>%1.tcp: &quot;%2&quot; is not HOST:PORT</source>
         <translation>%1.tcp: &quot;%2&quot; non è HOST:PORTA</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+15"/>
         <source>%1.listen: &quot;%2&quot; is not ADDRESS:PORT (an IP address of this machine, 0.0.0.0 for all, or localhost)</source>
         <translation>%1.listen: &quot;%2&quot; non è INDIRIZZO:PORTA (un indirizzo IP di questa macchina, 0.0.0.0 per tutti, oppure localhost)</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-50"/>
         <source>no station port &quot;%1&quot;</source>
         <translation>nessuna porta di stazione &quot;%1&quot;</translation>
     </message>
@@ -11622,7 +11622,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::SharedLink</name>
     <message>
-        <location filename="../network/shared_link.cpp" line="+222"/>
+        <location filename="../network/shared_link.cpp" line="+251"/>
         <source>CPU Link exchange among %1 (%2 ms); no frames: the manual does not publish them</source>
         <translation>scambio CPU Link tra %1 (%2 ms); nessun frame: il manuale non li pubblica</translation>
     </message>

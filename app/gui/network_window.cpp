@@ -278,7 +278,7 @@ void NetworkWindow::buildMenus() {
                     &NetworkView::addStationFromProgram);
     edit->addAction(tr("Add Station as a &New Project..."), m_view,
                     &NetworkView::addNewProjectStation);
-    edit->addAction(tr("Network &Period..."), m_view, &NetworkView::editPeriod);
+    edit->addAction(tr("Network Peri&od..."), m_view, &NetworkView::editPeriod);
 
     m_simulationMenu = menuBar()->addMenu(tr("&Simulation"));
     auto add = [&](const char *name, const QString &text, QStyle::StandardPixmap icon,
