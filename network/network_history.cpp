@@ -27,7 +27,19 @@ template <std::size_t N>
 // the same way, and those 8 written out without a branch a word. Comparing every station's
 // image is most of the recording's cost (BM_NetworkHistoryRatio, docs/performance.md): this
 // is about 3 instructions a 32 bytes; a memcmp a block and the loop around it were about 8.
-#if defined(__x86_64__) && (defined(__clang__) || defined(__GNUC__))
+// Not under a sanitizer: the clones' resolver runs while the dynamic linker relocates the
+// program, before the sanitizer's runtime is up, and ThreadSanitizer's instrumentation of it
+// crashed there (CI, test_network under TSan).
+#if defined(__has_feature)
+#if __has_feature(thread_sanitizer) || __has_feature(address_sanitizer) ||                         \
+    __has_feature(memory_sanitizer)
+#define RUNG_SANITIZED 1
+#endif
+#endif
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
+#define RUNG_SANITIZED 1
+#endif
+#if defined(__x86_64__) && (defined(__clang__) || defined(__GNUC__)) && !defined(RUNG_SANITIZED)
 [[gnu::target_clones("avx2", "default")]]
 #endif
 void appendChangedWords(std::int32_t *old, const std::int32_t *now, std::size_t n,
