@@ -19,12 +19,9 @@ namespace {
 
 using model::SystemRole;
 
-// A station's words and bits of one share, by image index.
+// A station's words and bits of one share, by image index, as copy() copies them: runs of
+// consecutive words of one width, and the bits by image word.
 struct Share {
-    std::vector<std::int32_t> words;
-    std::vector<int> widths;
-    std::vector<model::BitRef> bits;
-    // What copy() copies: runs of consecutive words of one width, and the bits by image word.
     struct WordRun {
         std::size_t first = 0;
         std::size_t count = 0;
@@ -32,32 +29,27 @@ struct Share {
     };
     std::vector<WordRun> wordRuns;
     std::vector<std::pair<std::size_t, std::uint32_t>> bitWords; // image word, mask
-};
 
-void makeRuns(Share &share) {
-    for (std::size_t k = 0; k < share.words.size(); ++k) {
-        if (share.words[k] < 0)
-            continue;
-        const auto word = static_cast<std::size_t>(share.words[k]);
-        if (!share.wordRuns.empty()) {
-            Share::WordRun &last = share.wordRuns.back();
-            if (last.width == share.widths[k] && last.first + last.count == word) {
-                ++last.count;
-                continue;
-            }
-        }
-        share.wordRuns.push_back({word, 1, share.widths[k]});
-    }
-    for (const model::BitRef &b : share.bits) {
-        if (!b.valid())
-            continue;
-        const auto word = static_cast<std::size_t>(b.word);
-        if (!share.bitWords.empty() && share.bitWords.back().first == word)
-            share.bitWords.back().second |= b.mask;
+    void addWord(std::int32_t index, int width) {
+        if (index < 0)
+            return;
+        const auto word = static_cast<std::size_t>(index);
+        if (!wordRuns.empty() && wordRuns.back().width == width &&
+            wordRuns.back().first + wordRuns.back().count == word)
+            ++wordRuns.back().count;
         else
-            share.bitWords.emplace_back(word, b.mask);
+            wordRuns.push_back({word, 1, width});
     }
-}
+    void addBit(const model::BitRef &b) {
+        if (!b.valid())
+            return;
+        const auto word = static_cast<std::size_t>(b.word);
+        if (!bitWords.empty() && bitWords.back().first == word)
+            bitWords.back().second |= b.mask;
+        else
+            bitWords.emplace_back(word, b.mask);
+    }
+};
 
 Share shareOf(const Station &s, const model::SharedMode &mode, int number) {
     Share share;
@@ -71,15 +63,12 @@ Share shareOf(const Station &s, const model::SharedMode &mode, int number) {
             const model::Address x = model::offsetAddress(t, *first, k);
             if (!x.valid())
                 break;
-            if (t.area(x.area).kind == model::AreaKind::Bit) {
-                share.bits.push_back(l.bit(x));
-            } else {
-                share.words.push_back(l.word(x));
-                share.widths.push_back(l.wordBits(x));
-            }
+            if (t.area(x.area).kind == model::AreaKind::Bit)
+                share.addBit(l.bit(x));
+            else
+                share.addWord(l.word(x), l.wordBits(x));
         }
     }
-    makeRuns(share);
     return share;
 }
 

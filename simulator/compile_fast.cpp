@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 // Program::fast: which steps the plain scan's loop (Engine::runFast, engine_fast.cpp) runs
 // itself. A step keeps the full interpreter (Slow) when it has an operand resolved at run
@@ -117,6 +118,21 @@ std::optional<FastElement> constantElement(const Program &program, const Step &s
     return e;
 }
 
+// The op a rung's first contact becomes when this op follows it (FastOp::LoadStartTimerK ...);
+// Slow: none.
+FastOp afterLoadStart(FastOp next) {
+    constexpr std::pair<FastOp, FastOp> kFused[] = {
+        {FastOp::TimerK, FastOp::LoadStartTimerK},
+        {FastOp::CounterK, FastOp::LoadStartCounterK},
+        {FastOp::MoveWord16, FastOp::LoadStartMoveWord16},
+        {FastOp::MoveConst16, FastOp::LoadStartMoveConst16},
+        {FastOp::Out, FastOp::LoadStartOut}};
+    for (const auto &[op, fused] : kFused)
+        if (op == next)
+            return fused;
+    return FastOp::Slow;
+}
+
 // Runs of fast steps that run as one (FastOp::SeriesStart2 ...): the first step's op
 // becomes the run's, the others keep theirs.
 void fuse(std::vector<FastStep> &fast) {
@@ -136,26 +152,12 @@ void fuse(std::vector<FastStep> &fast) {
         } else if (is(i, load) && is(i + 1, contactAnd) && is(i + 2, {FastOp::OrBlock})) {
             fast[i].op = FastOp::SeriesOr;
             i += 3;
-        } else if (is(i, {FastOp::LoadStart, FastOp::LoadStartNot}) &&
-                   is(i + 1, {FastOp::TimerK, FastOp::CounterK, FastOp::MoveWord16,
-                              FastOp::MoveConst16, FastOp::Out})) {
-            switch (fast[i + 1].op) {
-            case FastOp::TimerK:
-                fast[i].op = FastOp::LoadStartTimerK;
-                break;
-            case FastOp::CounterK:
-                fast[i].op = FastOp::LoadStartCounterK;
-                break;
-            case FastOp::MoveWord16:
-                fast[i].op = FastOp::LoadStartMoveWord16;
-                break;
-            case FastOp::MoveConst16:
-                fast[i].op = FastOp::LoadStartMoveConst16;
-                break;
-            default:
-                fast[i].op = FastOp::LoadStartOut;
-                break;
-            }
+        } else if (const FastOp fused =
+                       is(i, {FastOp::LoadStart, FastOp::LoadStartNot}) && i + 1 < fast.size()
+                           ? afterLoadStart(fast[i + 1].op)
+                           : FastOp::Slow;
+                   fused != FastOp::Slow) {
+            fast[i].op = fused;
             i += 2;
         } else if (is(i, contactAnd) && is(i + 1, contactAnd)) {
             fast[i].op = FastOp::SeriesAnd2;
