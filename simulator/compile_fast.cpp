@@ -142,7 +142,11 @@ void fuse(std::vector<FastStep> &fast) {
     const auto contactAnd = {FastOp::And, FastOp::AndNot};
     const auto load = {FastOp::Load, FastOp::LoadNot};
     for (std::size_t i = 0; i < fast.size();) {
-        if (is(i, {FastOp::LoadStart, FastOp::LoadStartNot}) && is(i + 1, contactAnd)) {
+        if (is(i, {FastOp::LoadStart, FastOp::LoadStartNot}) && is(i + 1, contactAnd) &&
+            is(i + 2, {FastOp::Or, FastOp::OrNot})) {
+            fast[i].op = FastOp::SeriesStartOr;
+            i += 3;
+        } else if (is(i, {FastOp::LoadStart, FastOp::LoadStartNot}) && is(i + 1, contactAnd)) {
             fast[i].op = FastOp::SeriesStart2;
             i += 2;
         } else if (is(i, load) && is(i + 1, {FastOp::Or, FastOp::OrNot}) &&
@@ -180,8 +184,20 @@ void buildFastSteps(Program &program) {
     program.fastElements.clear();
     const bool lean = program.gates.empty(); // no timer or counter is gated
     const bool flags = program.flags.any();
+    program.gatedSteps = false;
     for (std::size_t i = 0; i < program.steps.size(); ++i) {
         const Step &s = program.steps[i];
+        switch (s.code) {
+        case Code::StepLadder:
+        case Code::Return:
+        case Code::StepDefine:
+        case Code::Interlock:
+        case Code::InterlockClear:
+            program.gatedSteps = true;
+            break;
+        default:
+            break;
+        }
         FastStep f;
         f.op = fastOf(s);
         f.word = s.bit.word;
@@ -201,8 +217,7 @@ void buildFastSteps(Program &program) {
                 f.op = f.op == FastOp::Timer ? FastOp::TimerFull : FastOp::CounterFull;
             } else if (const std::optional<FastElement> e = constantElement(program, s)) {
                 f.op = f.op == FastOp::Timer ? FastOp::TimerK : FastOp::CounterK;
-                f.word =
-                    static_cast<std::int32_t>(program.fastElements.size() * sizeof(FastElement));
+                f.word = static_cast<std::int32_t>(program.fastElements.size());
                 program.fastElements.push_back(*e);
                 program.fast.push_back(f);
                 continue;
@@ -253,6 +268,10 @@ void buildFastSteps(Program &program) {
         program.fast.push_back(f);
     }
     fuse(program.fast);
+    // fastElements is complete: its elements stay where they are for the program's life.
+    for (FastStep &f : program.fast)
+        if (f.op == FastOp::TimerK || f.op == FastOp::CounterK)
+            f.setElement(&program.fastElements[static_cast<std::size_t>(f.word)]);
     FastStep stop;
     stop.op = FastOp::Stop;
     program.fast.push_back(stop);

@@ -90,12 +90,23 @@ void Engine::scan() {
         const bool forced = !m_forcedWords.empty();
         const bool deferred = m_program->deferredBitWrites;
         using Run = std::size_t (Engine::*)();
-        static constexpr Run runs[2][2][2] = {
-            {{&Engine::runFast<false, false, false>, &Engine::runFast<false, false, true>},
-             {&Engine::runFast<false, true, false>, &Engine::runFast<false, true, true>}},
-            {{&Engine::runFast<true, false, false>, &Engine::runFast<true, false, true>},
-             {&Engine::runFast<true, true, false>, &Engine::runFast<true, true, true>}}};
-        (this->*runs[m_record][forced][deferred])();
+        static constexpr Run runs[2][2][2][2] = {{{{&Engine::runFast<false, false, false, false>,
+                                                    &Engine::runFast<false, false, false, true>},
+                                                   {&Engine::runFast<false, false, true, false>,
+                                                    &Engine::runFast<false, false, true, true>}},
+                                                  {{&Engine::runFast<false, true, false, false>,
+                                                    &Engine::runFast<false, true, false, true>},
+                                                   {&Engine::runFast<false, true, true, false>,
+                                                    &Engine::runFast<false, true, true, true>}}},
+                                                 {{{&Engine::runFast<true, false, false, false>,
+                                                    &Engine::runFast<true, false, false, true>},
+                                                   {&Engine::runFast<true, false, true, false>,
+                                                    &Engine::runFast<true, false, true, true>}},
+                                                  {{&Engine::runFast<true, true, false, false>,
+                                                    &Engine::runFast<true, true, false, true>},
+                                                   {&Engine::runFast<true, true, true, false>,
+                                                    &Engine::runFast<true, true, true, true>}}}};
+        (this->*runs[m_record][forced][deferred][m_program->gatedSteps])();
     } else {
         const bool special = m_program->specialSteps;
         if (m_record)

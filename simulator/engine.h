@@ -208,7 +208,8 @@ private:
     std::size_t runSegment(std::size_t from, std::size_t to);
     // A whole scan's steps from the first (engine_fast.cpp): Program::fast's loop, the full
     // interpreter for a Slow step. Forced: some bit is forced (without, no write looks).
-    template <bool Record, bool Forced, bool Deferred> std::size_t runFast();
+    // Gated: some step may turn the gate OFF (Program::gatedSteps; without, no gate is read).
+    template <bool Record, bool Forced, bool Deferred, bool Gated> std::size_t runFast();
     void startInsideScan();
     void completeInsideScan();
     bool breakpointHolds(std::size_t instruction);

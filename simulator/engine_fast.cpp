@@ -31,7 +31,7 @@ inline bool edgeOf(std::uint8_t &prev, bool now, bool falling) {
 #pragma GCC diagnostic ignored "-Wpedantic"
 #endif
 
-template <bool Record, bool Forced, bool Deferred> std::size_t Engine::runFast() {
+template <bool Record, bool Forced, bool Deferred, bool Gated> std::size_t Engine::runFast() {
     const Program &p = *m_program;
     const FastStep *fast = p.fast.data();
     const Step *steps = p.steps.data();
@@ -51,6 +51,9 @@ template <bool Record, bool Forced, bool Deferred> std::size_t Engine::runFast()
     int psp = 0;
     bool acc = false;
     bool gate = true;
+    // A program without STL, STEP(08), MC / IL: no step ever turns the gate OFF, so the loop
+    // made for it (Gated false) does not read it at every contact.
+#define RUNG_GATE (Gated ? gate : true)
     bool interlock = true;
     bool stepActive = true;
     m_regs.depth = 0;
@@ -82,10 +85,6 @@ template <bool Record, bool Forced, bool Deferred> std::size_t Engine::runFast()
             R[index] = wrapToWidth(value, width);
     };
     ElementState *states = m_states.data();
-    const auto *elements = reinterpret_cast<const char *>(p.fastElements.data());
-    auto elementOf = [elements](const FastStep &f) -> const FastElement & {
-        return *reinterpret_cast<const FastElement *>(elements + f.word);
-    };
     auto stateOf = [states](const FastElement &e) -> ElementState & {
         return *reinterpret_cast<ElementState *>(reinterpret_cast<char *>(states) + e.state);
     };
@@ -123,7 +122,7 @@ template <bool Record, bool Forced, bool Deferred> std::size_t Engine::runFast()
         } else if (bsp < kBlockStack) {
             blocks[bsp++] = acc;
         }
-        acc = v & gate;
+        acc = v & RUNG_GATE;
     };
     // The Step of an op that reads it (FastStep::word holds its byte offset).
     auto stepOf = [steps](const FastStep &f) -> const Step & {
@@ -197,6 +196,7 @@ template <bool Record, bool Forced, bool Deferred> std::size_t Engine::runFast()
                                             &&opLoadStartMoveWord16,
                                             &&opLoadStartMoveConst16,
                                             &&opLoadStartOut,
+                                            &&opSeriesStartOr,
                                             &&opStop};
     static_assert(std::size(table) == static_cast<std::size_t>(FastOp::Stop) + 1);
     const FastStep *f = fast;
@@ -229,10 +229,10 @@ opAndNot:
     acc = acc & !bitOf(*f);
     RUNG_NEXT();
 opOr:
-    acc = acc | (bitOf(*f) & gate);
+    acc = acc | (bitOf(*f) & RUNG_GATE);
     RUNG_NEXT();
 opOrNot:
-    acc = acc | (!bitOf(*f) & gate);
+    acc = acc | (!bitOf(*f) & RUNG_GATE);
     RUNG_NEXT();
 opLoadEdge:
     load(edgeAt(*f), (stepOf(*f).flags & kRungStart) != 0);
@@ -241,7 +241,7 @@ opAndEdge:
     acc = acc & edgeAt(*f);
     RUNG_NEXT();
 opOrEdge:
-    acc = acc | (edgeAt(*f) & gate);
+    acc = acc | (edgeAt(*f) & RUNG_GATE);
     RUNG_NEXT();
 opAndBlock:
     if (bsp > 0)
@@ -378,13 +378,26 @@ opSlow : {
     goto *table[static_cast<std::size_t>(f->op)];
 }
 opSeriesStart2 : {
-    const bool a = contact(f[0]) & gate;
+    const bool a = contact(f[0]) & RUNG_GATE;
     bsp = 0;
     psp = 0;
     if constexpr (Record)
         flow[at()] = a;
     acc = a & contact(f[1]);
     ++f;
+    RUNG_NEXT();
+}
+opSeriesStartOr : {
+    const bool a = contact(f[0]) & RUNG_GATE;
+    const bool series = a & contact(f[1]);
+    bsp = 0;
+    psp = 0;
+    if constexpr (Record) {
+        flow[at()] = a;
+        flow[at() + 1] = series;
+    }
+    acc = series | (contact(f[2]) & RUNG_GATE);
+    f += 2;
     RUNG_NEXT();
 }
 opSeriesAnd2:
@@ -398,8 +411,8 @@ opParallelAnd : {
     // The block stack's bound, as LD and ANB keep it (the compiler never comes near it).
     if (bsp >= kBlockStack) [[unlikely]]
         goto *table[static_cast<std::size_t>(f->flip ? FastOp::LoadNot : FastOp::Load)];
-    const bool a = contact(f[0]) & gate;
-    const bool branch = a | (contact(f[1]) & gate);
+    const bool a = contact(f[0]) & RUNG_GATE;
+    const bool branch = a | (contact(f[1]) & RUNG_GATE);
     if constexpr (Record) {
         flow[at()] = a;
         flow[at() + 1] = branch;
@@ -411,7 +424,7 @@ opParallelAnd : {
 opSeriesOr : {
     if (bsp >= kBlockStack) [[unlikely]]
         goto *table[static_cast<std::size_t>(f->flip ? FastOp::LoadNot : FastOp::Load)];
-    const bool a = contact(f[0]) & gate;
+    const bool a = contact(f[0]) & RUNG_GATE;
     const bool series = a & contact(f[1]);
     if constexpr (Record) {
         flow[at()] = a;
@@ -513,7 +526,7 @@ opTimerK : {
     // opTimer's rules with what the K set value decides worked out by the compiler: the done
     // bit is on once the time reached set x base; units by a multiply-shift (FastElement).
     // A timer whose input is OFF, most of a program's timers most of the time, only clears.
-    const FastElement &e = elementOf(*f);
+    const FastElement &e = *f->element();
     ElementState &st = stateOf(e);
     R[e.setWord] = e.set;
     if (!acc) {
@@ -536,7 +549,7 @@ opTimerK : {
     RUNG_NEXT();
 }
 opCounterK : {
-    const FastElement &e = elementOf(*f);
+    const FastElement &e = *f->element();
     ElementState &st = stateOf(e);
     R[e.setWord] = e.set;
     if (acc && !st.previous && st.accumulated < e.set)
@@ -552,7 +565,7 @@ opCounterK : {
     do {                                                                                           \
         bsp = 0;                                                                                   \
         psp = 0;                                                                                   \
-        acc = contact(*f) & gate;                                                                  \
+        acc = contact(*f) & RUNG_GATE;                                                             \
         if constexpr (Record)                                                                      \
             flow[at()] = acc;                                                                      \
         ++f;                                                                                       \
@@ -576,6 +589,7 @@ opEnd:
 opStop:
     return n;
 #undef RUNG_NEXT
+#undef RUNG_GATE
 }
 
 #if defined(__clang__)
@@ -584,13 +598,21 @@ opStop:
 #pragma GCC diagnostic pop
 #endif
 
-template std::size_t Engine::runFast<false, false, false>();
-template std::size_t Engine::runFast<false, false, true>();
-template std::size_t Engine::runFast<false, true, false>();
-template std::size_t Engine::runFast<false, true, true>();
-template std::size_t Engine::runFast<true, false, false>();
-template std::size_t Engine::runFast<true, false, true>();
-template std::size_t Engine::runFast<true, true, false>();
-template std::size_t Engine::runFast<true, true, true>();
+template std::size_t Engine::runFast<false, false, false, false>();
+template std::size_t Engine::runFast<false, false, false, true>();
+template std::size_t Engine::runFast<false, false, true, false>();
+template std::size_t Engine::runFast<false, false, true, true>();
+template std::size_t Engine::runFast<false, true, false, false>();
+template std::size_t Engine::runFast<false, true, false, true>();
+template std::size_t Engine::runFast<false, true, true, false>();
+template std::size_t Engine::runFast<false, true, true, true>();
+template std::size_t Engine::runFast<true, false, false, false>();
+template std::size_t Engine::runFast<true, false, false, true>();
+template std::size_t Engine::runFast<true, false, true, false>();
+template std::size_t Engine::runFast<true, false, true, true>();
+template std::size_t Engine::runFast<true, true, false, false>();
+template std::size_t Engine::runFast<true, true, false, true>();
+template std::size_t Engine::runFast<true, true, true, false>();
+template std::size_t Engine::runFast<true, true, true, true>();
 
 } // namespace rung::simulator

@@ -147,6 +147,25 @@ TEST(FastLoop, AStepLadderScansAsTheFullInterpreter) {
     expectSameScans(sim.result.program, {}, {sim.at("Y0"), sim.at("S1")}, 2000, 9);
 }
 
+// A rung's start with a holding contact (LD a, AND b, OR c: FastOp::SeriesStartOr), plain and
+// negated, outside and inside an interlock and a step ladder's step that are OFF now and then:
+// there the holding contact must not close the rung either.
+TEST(FastLoop, ARungStartWithAHoldingContactScansAsTheFullInterpreter) {
+    test::TableSim sim("LD X0\nAND X1\nOR Y0\nOUT Y0\nLDI X2\nANI X3\nORI X4\nOUT Y1\n"
+                       "LD X5\nIL\nLD X0\nAND X1\nOR X2\nOUT Y2\nLDI X3\nAND X4\nORI X6\n"
+                       "OUT Y3\nILC\nLD X6\nSET S0\nLD X7\nRST S0\nSTL S0\nLD X1\nANI X2\nOR X3\n"
+                       "OUT Y4\nRET\nEND");
+    ASSERT_TRUE(sim.result.ok()) << sim.result.diagnostics.front().message.toStdString();
+    const auto &fast = sim.result.program->fast;
+    EXPECT_EQ(std::count_if(fast.begin(), fast.end(),
+                            [](const FastStep &f) { return f.op == FastOp::SeriesStartOr; }),
+              5);
+    std::vector<model::Address> inputs;
+    for (int k = 0; k < 8; ++k)
+        inputs.push_back(sim.at(QStringLiteral("X%1").arg(k).toLatin1().constData()));
+    expectSameScans(sim.result.program, inputs, {sim.at("Y0"), sim.at("Y3")}, 400, 11, 2);
+}
+
 // The benchmark's 2048 steps run in the fast loop alone: no step goes to the full
 // interpreter (so the benchmark measures the loop), and the results agree.
 TEST(FastLoop, TheBenchmarkProgramRunsInTheFastLoopAlone) {
