@@ -238,11 +238,25 @@ void NetworkWindow::buildWindow() {
     m_status->setObjectName(QStringLiteral("networkStatus"));
     statusBar()->addPermanentWidget(m_status);
 
-    m_debug = new NetworkDebugController(this, m_tabs, this);
+    m_debug = new NetworkDebugController(this, m_tabs, m_history, this);
     connect(m_debug, &NetworkDebugController::stationWanted, this,
             [this](const QString &name) { selectStation(name); });
     connect(m_debug, &NetworkDebugController::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
+    // The chart's trigger is the network's one (Stop When... sets it too): armed there, shown
+    // here.
+    connect(m_chart, &NetworkChart::armRequested, this,
+            [this](const QString &condition, model::Trigger::Action action) {
+                QString error;
+                if (!m_debug->setTrigger(condition, action, &error))
+                    statusBar()->showMessage(error, 10000);
+            });
+    connect(m_chart, &NetworkChart::disarmRequested, this,
+            [this] { m_debug->setTrigger(QString(), m_debug->triggerAction(), nullptr); });
+    connect(m_debug, &NetworkDebugController::triggerChanged, this,
+            [this] { m_chart->showTrigger(m_debug->stopCondition(), m_debug->triggerAction()); });
+    connect(m_debug, &NetworkDebugController::triggerFired, m_chart,
+            &NetworkChart::showTriggerFired);
 }
 
 void NetworkWindow::buildMenus() {
@@ -336,7 +350,6 @@ void NetworkWindow::buildMenus() {
         if (m_session)
             m_session->powerCycle();
     });
-    m_simulationMenu->addAction(m_history->returnAction());
     m_speedMenu = m_simulationMenu->addMenu(tr("Spee&d"));
     auto *speeds = new QActionGroup(m_speedMenu);
     for (const double factor : {0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 100.0, 0.0}) {
