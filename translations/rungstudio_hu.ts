@@ -2371,7 +2371,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+103"/>
+        <location filename="../app/gui/network_chart.cpp" line="+104"/>
         <source>Follow</source>
         <translation>Követés</translation>
     </message>
@@ -2386,10 +2386,9 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Írjon be fent egy állomás operandusát (%1) a kirajzolásához</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Trigger: %1 &gt; 100</source>
-        <extracomment>the trigger&apos;s field: a condition on a station&apos;s device</extracomment>
-        <translation>Trigger: %1 &gt; 100</translation>
+        <location line="+7"/>
+        <source>Trigger: %1 rises, %2 &gt; 100</source>
+        <translation>Trigger: %1 rises, %2 &gt; 100</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3273,7 +3272,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
 <context>
     <name>rung::app::NetworkView</name>
     <message>
-        <location filename="../app/gui/network_view.cpp" line="+120"/>
+        <location filename="../app/gui/network_canvas.cpp" line="+59"/>
         <source>%1: scan period %2 ms</source>
         <translation>%1: ciklusidő %2 ms</translation>
     </message>
@@ -3313,7 +3312,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>a beállítások hibásak</translation>
     </message>
     <message>
-        <location line="+482"/>
+        <location filename="../app/gui/network_view.cpp" line="+196"/>
         <source>bridge: failed (%1)</source>
         <extracomment>a bridge whose line did not open; the tooltip says why</extracomment>
         <translation>híd: hibás (%1)</translation>
@@ -3350,7 +3349,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>híd: figyel itt: %1</translation>
     </message>
     <message>
-        <location line="-473"/>
+        <location filename="../app/gui/network_canvas.cpp" line="+20"/>
         <source>MODBUS slave (simulated)</source>
         <translation>MODBUS slave (szimulált)</translation>
     </message>
@@ -3370,7 +3369,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>szaggatott: a vezetéken nincsenek keretek (a kézikönyv nem közli őket)</translation>
     </message>
     <message>
-        <location line="+210"/>
+        <location filename="../app/gui/network_view.cpp" line="-103"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
@@ -3570,7 +3569,7 @@ Menti mégis, ezek nélkül?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+266"/>
+        <location filename="../app/gui/network_window.cpp" line="+257"/>
         <location line="+220"/>
         <source>Network</source>
         <translation>Hálózat</translation>
@@ -3845,7 +3844,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>%1 nem mentett módosításokat tartalmaz. Menti őket?</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location filename="../app/gui/network_window_session.cpp" line="+73"/>
         <source>%1: the listing does not draw as a ladder</source>
         <translation>%1: az utasításlista nem rajzolható létradiagramként</translation>
     </message>

@@ -2378,7 +2378,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+103"/>
+        <location filename="../app/gui/network_chart.cpp" line="+104"/>
         <source>Follow</source>
         <translation>Segui</translation>
     </message>
@@ -2393,10 +2393,9 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Scrivere sopra un operando di una stazione (%1) per disegnarlo</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Trigger: %1 &gt; 100</source>
-        <extracomment>the trigger&apos;s field: a condition on a station&apos;s device</extracomment>
-        <translation>Trigger: %1 &gt; 100</translation>
+        <location line="+7"/>
+        <source>Trigger: %1 rises, %2 &gt; 100</source>
+        <translation>Trigger: %1 rises, %2 &gt; 100</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3281,7 +3280,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
 <context>
     <name>rung::app::NetworkView</name>
     <message>
-        <location filename="../app/gui/network_view.cpp" line="+120"/>
+        <location filename="../app/gui/network_canvas.cpp" line="+59"/>
         <source>%1: scan period %2 ms</source>
         <translation>%1: periodo di scansione %2 ms</translation>
     </message>
@@ -3321,7 +3320,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>impostazioni rifiutate</translation>
     </message>
     <message>
-        <location line="+482"/>
+        <location filename="../app/gui/network_view.cpp" line="+196"/>
         <source>bridge: failed (%1)</source>
         <extracomment>a bridge whose line did not open; the tooltip says why</extracomment>
         <translation>ponte: guasto (%1)</translation>
@@ -3358,7 +3357,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>ponte: in ascolto su %1</translation>
     </message>
     <message>
-        <location line="-473"/>
+        <location filename="../app/gui/network_canvas.cpp" line="+20"/>
         <source>MODBUS slave (simulated)</source>
         <translation>Slave MODBUS (simulato)</translation>
     </message>
@@ -3378,7 +3377,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>tratteggiato: nessun frame sul cavo (il manuale non li pubblica)</translation>
     </message>
     <message>
-        <location line="+210"/>
+        <location filename="../app/gui/network_view.cpp" line="-103"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
@@ -3578,7 +3577,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+266"/>
+        <location filename="../app/gui/network_window.cpp" line="+257"/>
         <location line="+220"/>
         <source>Network</source>
         <translation>Rete</translation>
@@ -3853,7 +3852,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>%1 ha modifiche non salvate. Salvarle?</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location filename="../app/gui/network_window_session.cpp" line="+73"/>
         <source>%1: the listing does not draw as a ladder</source>
         <translation>%1: la lista istruzioni non si disegna come ladder</translation>
     </message>

@@ -4,6 +4,7 @@
 #include "app/gui/simulation_controller.h"
 #include "editor/timing_canvas.h"
 #include "model/target/address.h"
+#include "model/target/target_lists.h"
 #include "network/network_session.h"
 
 #include <QCheckBox>
@@ -102,8 +103,13 @@ void NetworkChart::retranslate() {
     m_add->setPlaceholderText(tr("Add station/device, e.g. %1").arg(example));
     m_follow->setText(tr("Follow"));
     m_canvas->setEmptyText(tr("Type a station's device above (%1) to draw it").arg(example));
-    //: the trigger's field: a condition on a station's device
-    m_trigger->setPlaceholderText(tr("Trigger: %1 > 100").arg(example));
+    // The example in the first station's own devices: a bit rises, a word compares.
+    QString word = QStringLiteral("STATION/WORD");
+    if (m_session && !m_session->stations().empty()) {
+        const network::StationSource *first = m_session->stations().front();
+        word = first->stationName() + QLatin1Char('/') + model::exampleWord(first->target(), 10);
+    }
+    m_trigger->setPlaceholderText(tr("Trigger: %1 rises, %2 > 100").arg(example, word));
     m_trigger->setToolTip(tr("A condition on one station's device, checked after each of its "
                              "scans: STATION/DEVICE rises, falls, or = <> < <= > >= VALUE (the "
                              "same as Simulation > Stop When...)"));
