@@ -844,29 +844,19 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::DebugController</name>
     <message>
-        <location filename="../app/gui/debug_controller.cpp" line="+45"/>
-        <location line="+185"/>
+        <location filename="../app/gui/debug_controller.cpp" line="+43"/>
+        <location line="+169"/>
         <source>Simulation</source>
         <translation>Szimuláció</translation>
     </message>
     <message>
-        <location line="-176"/>
-        <location line="+177"/>
+        <location line="-160"/>
+        <location line="+161"/>
         <source>Scan Debugger</source>
         <translation>Ciklushibakereső</translation>
     </message>
     <message>
-        <location line="-146"/>
-        <source>No instruction on line %1 to stop at</source>
-        <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
-        <translation>A(z) %1. létrafok nincs az utasításlistában: ott nem lehet töréspont</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location line="-98"/>
         <source>Online Edit</source>
         <translation>Online szerkesztés</translation>
     </message>
@@ -886,53 +876,7 @@ PLC after serve restarts</source>
         <translation>A szimuláció leállítása</translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>S&amp;tep Instruction</source>
-        <translation>Lé&amp;pés egy utasítással</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>F&amp;inish Scan</source>
-        <translation>Ciklus &amp;befejezése</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Toggle &amp;Breakpoint</source>
-        <translation>&amp;Töréspont be/ki</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Breakpoint Co&amp;ndition...</source>
-        <translation>Tö&amp;réspont feltétele...</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <location line="+42"/>
-        <source>No instruction at %1 to stop at</source>
-        <translation>Itt (%1) nincs utasítás, amelynél meg lehetne állni</translation>
-    </message>
-    <message>
-        <location line="-38"/>
-        <source>Remove All Brea&amp;kpoints</source>
-        <translation>Minden töréspont eltá&amp;volítása</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Return to &amp;Live</source>
-        <translation>Vissza az élő állapot&amp;hoz</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>line %1</source>
-        <translation>%1. sor</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>rung %1</source>
-        <translation>%1. létrafok</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+66"/>
         <source>Breakpoint set at %1</source>
         <translation>Töréspont beállítva: %1</translation>
     </message>
@@ -946,6 +890,67 @@ PLC after serve restarts</source>
         <source>Stop before line %1: %2</source>
         <extracomment>where the breakpoint is: %1 line, %2 the instruction</extracomment>
         <translation>Megállás a(z) %1. sor előtt: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::DebugEntries</name>
+    <message>
+        <location filename="../app/gui/debug_entries.cpp" line="+17"/>
+        <source>S&amp;tep Instruction</source>
+        <translation>Lé&amp;pés egy utasítással</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>F&amp;inish Scan</source>
+        <translation>Ciklus &amp;befejezése</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toggle &amp;Breakpoint</source>
+        <translation>&amp;Töréspont be/ki</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Breakpoint Co&amp;ndition...</source>
+        <translation>Tö&amp;réspont feltétele...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Remove All Brea&amp;kpoints</source>
+        <translation>Minden töréspont eltá&amp;volítása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Return to &amp;Live</source>
+        <translation>Vissza az élő állapot&amp;hoz</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::DebugMarks</name>
+    <message>
+        <location filename="../app/gui/debug_marks.cpp" line="+35"/>
+        <source>line %1</source>
+        <translation>%1. sor</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rung %1</source>
+        <translation>%1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No instruction on line %1 to stop at</source>
+        <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
+        <translation>A(z) %1. létrafok nincs az utasításlistában: ott nem lehet töréspont</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No instruction at %1 to stop at</source>
+        <translation>Itt (%1) nincs utasítás, amelynél meg lehetne állni</translation>
     </message>
 </context>
 <context>
@@ -2366,7 +2371,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+70"/>
+        <location filename="../app/gui/network_chart.cpp" line="+104"/>
         <source>Follow</source>
         <translation>Követés</translation>
     </message>
@@ -2381,7 +2386,58 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Írjon be fent egy állomás operandusát (%1) a kirajzolásához</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+7"/>
+        <source>Trigger: %1 rises, %2 &gt; 100</source>
+        <translation>Trigger: %1 rises, %2 &gt; 100</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A condition on one station&apos;s device, checked after each of its scans: STATION/DEVICE rises, falls, or = &lt;&gt; &lt; &lt;= &gt; &gt;= VALUE (the same as Simulation &gt; Stop When...)</source>
+        <translation>Egy állomás operandusára vonatkozó feltétel, amelyet az állomás minden ciklusa után vizsgál: ÁLLOMÁS/OPERANDUS rises (felfutó él), falls (lefutó él), vagy = &lt;&gt; &lt; &lt;= &gt; &gt;= ÉRTÉK (ugyanaz, mint Szimuláció &gt; Megállási feltétel...)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stop the network</source>
+        <translation>A hálózat megállítása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only mark</source>
+        <translation>Csak jelölés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the network: every station pauses at the end of its scan when the condition becomes true</source>
+        <translation>A hálózat megállítása: amikor a feltétel igazzá válik, minden állomás megáll a ciklusa végén</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Arm</source>
+        <translation>Élesítés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Watch for the trigger (Enter in its field does the same)</source>
+        <translation>A trigger figyelése (a mezőben az Enter ugyanezt teszi)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Armed: stops the network when %1</source>
+        <translation>Élesítve: a hálózat megáll, ha %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Armed: marks when %1</source>
+        <translation>Élesítve: jelöl, ha %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 at %2 (scan %3)</source>
+        <extracomment>%1 the condition, %2 the virtual time, %3 the scan of its station</extracomment>
+        <translation>%1: %2 (%3. ciklus)</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>%1: write STATION/DEVICE, e.g. %2 (stations: %3)</source>
         <translation>%1: ÁLLOMÁS/OPERANDUS alakban írja, pl. %2 (állomások: %3)</translation>
     </message>
@@ -2396,7 +2452,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 nem őrzi %2 előzményeit</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+119"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -2404,54 +2460,13 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkDebugController</name>
     <message>
-        <location filename="../app/gui/network_debug_controller.cpp" line="+201"/>
-        <source>No instruction on line %1 to stop at</source>
-        <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
-        <translation>A(z) %1. létrafok nincs az utasításlistában: ott nem lehet töréspont</translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+238"/>
         <source>%1 stopped at its breakpoint on line %2; the other stations wait at the end of their scan</source>
         <extracomment>%1 station, %2 line of its instruction list</extracomment>
         <translation>%1 megállt a(z) %2. sor töréspontjánál; a többi állomás a ciklusa végén várakozik</translation>
     </message>
     <message>
-        <location line="+41"/>
-        <source>S&amp;tep Instruction</source>
-        <translation>Lé&amp;pés egy utasítással</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>F&amp;inish Scan</source>
-        <translation>Ciklus &amp;befejezése</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Toggle &amp;Breakpoint</source>
-        <translation>&amp;Töréspont be/ki</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Breakpoint Co&amp;ndition...</source>
-        <translation>Tö&amp;réspont feltétele...</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <location line="+152"/>
-        <source>No instruction at %1 to stop at</source>
-        <translation>Itt (%1) nincs utasítás, amelynél meg lehetne állni</translation>
-    </message>
-    <message>
-        <location line="-148"/>
-        <source>Remove All Brea&amp;kpoints</source>
-        <translation>Minden töréspont eltá&amp;volítása</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+43"/>
         <source>Stop &amp;When...</source>
         <translation>Megállási feltéte&amp;l...</translation>
     </message>
@@ -2484,22 +2499,18 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+110"/>
         <source>no station</source>
         <translation>nincs állomás</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>line %1</source>
-        <translation>%1. sor</translation>
+        <location line="+79"/>
+        <source>Stopped: %1 became true</source>
+        <extracomment>the status bar while the network&apos;s trigger holds it: %1 the condition (&quot;s2/D10 &gt; 100&quot;)</extracomment>
+        <translation>Megállt: %1 igazzá vált</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>rung %1</source>
-        <translation>%1. létrafok</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="-63"/>
         <source>Breakpoint set at %1 of %2</source>
         <extracomment>%1 the place (&quot;line 3&quot;, &quot;rung 2&quot;), %2 the station</extracomment>
         <translation>Töréspont beállítva: %2, %1</translation>
@@ -2516,23 +2527,28 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>%1 álljon meg a(z) %2. sor előtt: %3</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+38"/>
         <source>%1 stopped before line %2</source>
         <extracomment>the status bar while a station&apos;s scan is stopped inside: %1 station, %2 line</extracomment>
         <translation>%1 megállt a(z) %2. sor előtt</translation>
     </message>
     <message>
-        <location filename="../app/gui/network_debug_stop.cpp" line="+17"/>
+        <location filename="../app/gui/network_debug_stop.cpp" line="+25"/>
         <source>No stop condition</source>
         <translation>Nincs megállási feltétel</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>The network stops when %1 becomes true</source>
         <translation>A hálózat megáll, amikor %1 igazzá válik</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+2"/>
+        <source>The timing chart marks when %1 becomes true</source>
+        <translation>Az idődiagram jelöli, amikor %1 igazzá válik</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>%1: write STATION/CONDITION with a station of the network (%2)</source>
         <extracomment>%1 what was typed, %2 the stations&apos; names</extracomment>
         <translation>%1: ÁLLOMÁS/FELTÉTEL alakban írja, a hálózat egy állomásával (%2)</translation>
@@ -2543,7 +2559,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>%1 nem figyelhető a(z) %2 állomásban</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
         <source>%1 became true after scan %2 (%3): the network stopped there</source>
         <extracomment>%1 the condition (&quot;s2/D10 &gt; 100&quot;), %2 scan number, %3 virtual time</extracomment>
         <translation>%1 igazzá vált a(z) %2. ciklus után (%3): a hálózat ott megállt</translation>
@@ -2768,12 +2784,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
 <context>
     <name>rung::app::NetworkHistoryController</name>
     <message>
-        <location filename="../app/gui/network_history_controller.cpp" line="+55"/>
-        <source>Return to &amp;Live</source>
-        <translation>Vissza az élő állapot&amp;hoz</translation>
-    </message>
-    <message>
-        <location line="+42"/>
+        <location filename="../app/gui/network_history_controller.cpp" line="+90"/>
         <source>The network is stopped: run it, then pause it to see any instant of its past</source>
         <translation>A hálózat le van állítva: futtassa, majd állítsa szünetre, hogy a múltja bármely pillanatát lássa</translation>
     </message>
@@ -2795,7 +2806,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>Előzmények: %1, minden állomás (csak olvasható)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Every station&apos;s ladder, inputs and outputs, front panel and watched values show this instant. Run, Single Scan, Stop or Return to Live (Ctrl+Shift+L) go back to the present</source>
         <translation>Minden állomás létradiagramja, be- és kimenetei, előlapja és figyelt értékei ezt a pillanatot mutatják. A Futtatás, az Egy ciklus, a Megállás vagy a Vissza az élő állapothoz (Ctrl+Shift+L) visszavisz a jelenbe</translation>
     </message>
@@ -3261,7 +3272,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
 <context>
     <name>rung::app::NetworkView</name>
     <message>
-        <location filename="../app/gui/network_view.cpp" line="+120"/>
+        <location filename="../app/gui/network_canvas.cpp" line="+59"/>
         <source>%1: scan period %2 ms</source>
         <translation>%1: ciklusidő %2 ms</translation>
     </message>
@@ -3301,7 +3312,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>a beállítások hibásak</translation>
     </message>
     <message>
-        <location line="+482"/>
+        <location filename="../app/gui/network_view.cpp" line="+196"/>
         <source>bridge: failed (%1)</source>
         <extracomment>a bridge whose line did not open; the tooltip says why</extracomment>
         <translation>híd: hibás (%1)</translation>
@@ -3338,7 +3349,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>híd: figyel itt: %1</translation>
     </message>
     <message>
-        <location line="-473"/>
+        <location filename="../app/gui/network_canvas.cpp" line="+20"/>
         <source>MODBUS slave (simulated)</source>
         <translation>MODBUS slave (szimulált)</translation>
     </message>
@@ -3358,7 +3369,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>szaggatott: a vezetéken nincsenek keretek (a kézikönyv nem közli őket)</translation>
     </message>
     <message>
-        <location line="+210"/>
+        <location filename="../app/gui/network_view.cpp" line="-103"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
@@ -3558,13 +3569,13 @@ Menti mégis, ezek nélkül?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+252"/>
-        <location line="+221"/>
+        <location filename="../app/gui/network_window.cpp" line="+257"/>
+        <location line="+220"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
     <message>
-        <location line="-218"/>
+        <location line="-217"/>
         <source>&amp;Network</source>
         <translation>&amp;Hálózat</translation>
     </message>
@@ -3671,7 +3682,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>&amp;Ki-bekapcsolás</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Spee&amp;d</source>
         <translation>Sebessé&amp;g</translation>
     </message>
@@ -3833,7 +3844,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>%1 nem mentett módosításokat tartalmaz. Menti őket?</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location filename="../app/gui/network_window_session.cpp" line="+73"/>
         <source>%1: the listing does not draw as a ladder</source>
         <translation>%1: az utasításlista nem rajzolható létradiagramként</translation>
     </message>
@@ -11599,7 +11610,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::SharedLink</name>
     <message>
-        <location filename="../network/shared_link.cpp" line="+251"/>
+        <location filename="../network/shared_link.cpp" line="+240"/>
         <source>CPU Link exchange among %1 (%2 ms); no frames: the manual does not publish them</source>
         <translation>CPU Link adatcsere: %1 (%2 ms); keretek nélkül: a kézikönyv nem közli őket</translation>
     </message>

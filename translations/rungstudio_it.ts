@@ -846,29 +846,19 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::DebugController</name>
     <message>
-        <location filename="../app/gui/debug_controller.cpp" line="+45"/>
-        <location line="+185"/>
+        <location filename="../app/gui/debug_controller.cpp" line="+43"/>
+        <location line="+169"/>
         <source>Simulation</source>
         <translation>Simulazione</translation>
     </message>
     <message>
-        <location line="-176"/>
-        <location line="+177"/>
+        <location line="-160"/>
+        <location line="+161"/>
         <source>Scan Debugger</source>
         <translation>Debugger della scansione</translation>
     </message>
     <message>
-        <location line="-146"/>
-        <source>No instruction on line %1 to stop at</source>
-        <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
-        <translation>Il segmento %1 non è nella lista istruzioni: lì non c&apos;è punto di interruzione</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location line="-98"/>
         <source>Online Edit</source>
         <translation>Modifica online</translation>
     </message>
@@ -888,53 +878,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>Ferma la simulazione</translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>S&amp;tep Instruction</source>
-        <translation>P&amp;asso di una istruzione</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>F&amp;inish Scan</source>
-        <translation>Co&amp;mpleta la scansione</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Toggle &amp;Breakpoint</source>
-        <translation>Punto di interr&amp;uzione sì/no</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Breakpoint Co&amp;ndition...</source>
-        <translation>Con&amp;dizione del punto di interruzione...</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <location line="+42"/>
-        <source>No instruction at %1 to stop at</source>
-        <translation>Nessuna istruzione in %1 dove fermarsi</translation>
-    </message>
-    <message>
-        <location line="-38"/>
-        <source>Remove All Brea&amp;kpoints</source>
-        <translation>Rimuovi &amp;tutti i punti di interruzione</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Return to &amp;Live</source>
-        <translation>Torna a&amp;l vivo</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>line %1</source>
-        <translation>riga %1</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>rung %1</source>
-        <translation>segmento %1</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+66"/>
         <source>Breakpoint set at %1</source>
         <translation>Punto di interruzione impostato: %1</translation>
     </message>
@@ -948,6 +892,67 @@ PLC dopo il riavvio di serve</translation>
         <source>Stop before line %1: %2</source>
         <extracomment>where the breakpoint is: %1 line, %2 the instruction</extracomment>
         <translation>Fermati prima della riga %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::DebugEntries</name>
+    <message>
+        <location filename="../app/gui/debug_entries.cpp" line="+17"/>
+        <source>S&amp;tep Instruction</source>
+        <translation>P&amp;asso di una istruzione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>F&amp;inish Scan</source>
+        <translation>Co&amp;mpleta la scansione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toggle &amp;Breakpoint</source>
+        <translation>Punto di interr&amp;uzione sì/no</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Breakpoint Co&amp;ndition...</source>
+        <translation>Con&amp;dizione del punto di interruzione...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Remove All Brea&amp;kpoints</source>
+        <translation>Rimuovi &amp;tutti i punti di interruzione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Return to &amp;Live</source>
+        <translation>Torna a&amp;l vivo</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::DebugMarks</name>
+    <message>
+        <location filename="../app/gui/debug_marks.cpp" line="+35"/>
+        <source>line %1</source>
+        <translation>riga %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rung %1</source>
+        <translation>segmento %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No instruction on line %1 to stop at</source>
+        <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
+        <translation>Il segmento %1 non è nella lista istruzioni: lì non c&apos;è punto di interruzione</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No instruction at %1 to stop at</source>
+        <translation>Nessuna istruzione in %1 dove fermarsi</translation>
     </message>
 </context>
 <context>
@@ -2373,7 +2378,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+70"/>
+        <location filename="../app/gui/network_chart.cpp" line="+104"/>
         <source>Follow</source>
         <translation>Segui</translation>
     </message>
@@ -2388,7 +2393,58 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Scrivere sopra un operando di una stazione (%1) per disegnarlo</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+7"/>
+        <source>Trigger: %1 rises, %2 &gt; 100</source>
+        <translation>Trigger: %1 rises, %2 &gt; 100</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A condition on one station&apos;s device, checked after each of its scans: STATION/DEVICE rises, falls, or = &lt;&gt; &lt; &lt;= &gt; &gt;= VALUE (the same as Simulation &gt; Stop When...)</source>
+        <translation>Una condizione sull&apos;operando di una stazione, verificata dopo ogni sua scansione: STAZIONE/OPERANDO rises (fronte di salita), falls (fronte di discesa), oppure = &lt;&gt; &lt; &lt;= &gt; &gt;= VALORE (come Simulazione &gt; Fermati quando...)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stop the network</source>
+        <translation>Ferma la rete</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only mark</source>
+        <translation>Solo segna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the network: every station pauses at the end of its scan when the condition becomes true</source>
+        <translation>Ferma la rete: quando la condizione diventa vera, ogni stazione si ferma alla fine della sua scansione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Arm</source>
+        <translation>Arma</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Watch for the trigger (Enter in its field does the same)</source>
+        <translation>Attende il trigger (Invio nel suo campo fa lo stesso)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Armed: stops the network when %1</source>
+        <translation>Armato: la rete si ferma quando %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Armed: marks when %1</source>
+        <translation>Armato: segna quando %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 at %2 (scan %3)</source>
+        <extracomment>%1 the condition, %2 the virtual time, %3 the scan of its station</extracomment>
+        <translation>%1 a %2 (scansione %3)</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>%1: write STATION/DEVICE, e.g. %2 (stations: %3)</source>
         <translation>%1: scrivere STAZIONE/OPERANDO, ad es. %2 (stazioni: %3)</translation>
     </message>
@@ -2403,7 +2459,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 non conserva la storia di %2</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+119"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -2411,54 +2467,13 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkDebugController</name>
     <message>
-        <location filename="../app/gui/network_debug_controller.cpp" line="+201"/>
-        <source>No instruction on line %1 to stop at</source>
-        <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
-        <translation>Il segmento %1 non è nella lista istruzioni: lì non c&apos;è punto di interruzione</translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+238"/>
         <source>%1 stopped at its breakpoint on line %2; the other stations wait at the end of their scan</source>
         <extracomment>%1 station, %2 line of its instruction list</extracomment>
         <translation>%1 si è fermata al punto di interruzione della riga %2; le altre stazioni attendono alla fine della loro scansione</translation>
     </message>
     <message>
-        <location line="+41"/>
-        <source>S&amp;tep Instruction</source>
-        <translation>P&amp;asso di una istruzione</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>F&amp;inish Scan</source>
-        <translation>Co&amp;mpleta la scansione</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Toggle &amp;Breakpoint</source>
-        <translation>Punto di interr&amp;uzione sì/no</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Breakpoint Co&amp;ndition...</source>
-        <translation>Con&amp;dizione del punto di interruzione...</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <location line="+152"/>
-        <source>No instruction at %1 to stop at</source>
-        <translation>Nessuna istruzione in %1 dove fermarsi</translation>
-    </message>
-    <message>
-        <location line="-148"/>
-        <source>Remove All Brea&amp;kpoints</source>
-        <translation>Rimuovi &amp;tutti i punti di interruzione</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+43"/>
         <source>Stop &amp;When...</source>
         <translation>Fermati &amp;quando...</translation>
     </message>
@@ -2491,22 +2506,18 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+110"/>
         <source>no station</source>
         <translation>nessuna stazione</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>line %1</source>
-        <translation>riga %1</translation>
+        <location line="+79"/>
+        <source>Stopped: %1 became true</source>
+        <extracomment>the status bar while the network&apos;s trigger holds it: %1 the condition (&quot;s2/D10 &gt; 100&quot;)</extracomment>
+        <translation>Fermata: %1 è diventata vera</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>rung %1</source>
-        <translation>segmento %1</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="-63"/>
         <source>Breakpoint set at %1 of %2</source>
         <extracomment>%1 the place (&quot;line 3&quot;, &quot;rung 2&quot;), %2 the station</extracomment>
         <translation>Punto di interruzione impostato: %2, %1</translation>
@@ -2523,23 +2534,28 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>Ferma %1 prima della riga %2: %3</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+38"/>
         <source>%1 stopped before line %2</source>
         <extracomment>the status bar while a station&apos;s scan is stopped inside: %1 station, %2 line</extracomment>
         <translation>%1 ferma prima della riga %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/network_debug_stop.cpp" line="+17"/>
+        <location filename="../app/gui/network_debug_stop.cpp" line="+25"/>
         <source>No stop condition</source>
         <translation>Nessuna condizione di arresto</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>The network stops when %1 becomes true</source>
         <translation>La rete si ferma quando %1 diventa vera</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+2"/>
+        <source>The timing chart marks when %1 becomes true</source>
+        <translation>Il diagramma temporale segna quando %1 diventa vera</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>%1: write STATION/CONDITION with a station of the network (%2)</source>
         <extracomment>%1 what was typed, %2 the stations&apos; names</extracomment>
         <translation>%1: scrivere STAZIONE/CONDIZIONE con una stazione della rete (%2)</translation>
@@ -2550,7 +2566,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>%1 non si può osservare in %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
         <source>%1 became true after scan %2 (%3): the network stopped there</source>
         <extracomment>%1 the condition (&quot;s2/D10 &gt; 100&quot;), %2 scan number, %3 virtual time</extracomment>
         <translation>%1 è diventata vera dopo la scansione %2 (%3): la rete si è fermata lì</translation>
@@ -2775,12 +2791,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
 <context>
     <name>rung::app::NetworkHistoryController</name>
     <message>
-        <location filename="../app/gui/network_history_controller.cpp" line="+55"/>
-        <source>Return to &amp;Live</source>
-        <translation>Torna a&amp;l vivo</translation>
-    </message>
-    <message>
-        <location line="+42"/>
+        <location filename="../app/gui/network_history_controller.cpp" line="+90"/>
         <source>The network is stopped: run it, then pause it to see any instant of its past</source>
         <translation>La rete è fermata: eseguirla, poi metterla in pausa per vedere qualsiasi istante del suo passato</translation>
     </message>
@@ -2802,7 +2813,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>Cronologia: %1, tutte le stazioni (sola lettura)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Every station&apos;s ladder, inputs and outputs, front panel and watched values show this instant. Run, Single Scan, Stop or Return to Live (Ctrl+Shift+L) go back to the present</source>
         <translation>Il ladder, gli ingressi e le uscite, il pannello frontale e i valori osservati di ogni stazione mostrano questo istante. Esegui, Singola scansione, Fermati o Torna al vivo (Ctrl+Shift+L) riportano al presente</translation>
     </message>
@@ -3269,7 +3280,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
 <context>
     <name>rung::app::NetworkView</name>
     <message>
-        <location filename="../app/gui/network_view.cpp" line="+120"/>
+        <location filename="../app/gui/network_canvas.cpp" line="+59"/>
         <source>%1: scan period %2 ms</source>
         <translation>%1: periodo di scansione %2 ms</translation>
     </message>
@@ -3309,7 +3320,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>impostazioni rifiutate</translation>
     </message>
     <message>
-        <location line="+482"/>
+        <location filename="../app/gui/network_view.cpp" line="+196"/>
         <source>bridge: failed (%1)</source>
         <extracomment>a bridge whose line did not open; the tooltip says why</extracomment>
         <translation>ponte: guasto (%1)</translation>
@@ -3346,7 +3357,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>ponte: in ascolto su %1</translation>
     </message>
     <message>
-        <location line="-473"/>
+        <location filename="../app/gui/network_canvas.cpp" line="+20"/>
         <source>MODBUS slave (simulated)</source>
         <translation>Slave MODBUS (simulato)</translation>
     </message>
@@ -3366,7 +3377,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>tratteggiato: nessun frame sul cavo (il manuale non li pubblica)</translation>
     </message>
     <message>
-        <location line="+210"/>
+        <location filename="../app/gui/network_view.cpp" line="-103"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
@@ -3566,13 +3577,13 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+252"/>
-        <location line="+221"/>
+        <location filename="../app/gui/network_window.cpp" line="+257"/>
+        <location line="+220"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
     <message>
-        <location line="-218"/>
+        <location line="-217"/>
         <source>&amp;Network</source>
         <translation>&amp;Rete</translation>
     </message>
@@ -3679,7 +3690,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>&amp;Spegni e riaccendi</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Spee&amp;d</source>
         <translation>&amp;Velocità</translation>
     </message>
@@ -3841,7 +3852,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>%1 ha modifiche non salvate. Salvarle?</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location filename="../app/gui/network_window_session.cpp" line="+73"/>
         <source>%1: the listing does not draw as a ladder</source>
         <translation>%1: la lista istruzioni non si disegna come ladder</translation>
     </message>
@@ -11622,7 +11633,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::SharedLink</name>
     <message>
-        <location filename="../network/shared_link.cpp" line="+251"/>
+        <location filename="../network/shared_link.cpp" line="+240"/>
         <source>CPU Link exchange among %1 (%2 ms); no frames: the manual does not publish them</source>
         <translation>scambio CPU Link tra %1 (%2 ms); nessun frame: il manuale non li pubblica</translation>
     </message>

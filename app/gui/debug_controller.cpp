@@ -1,7 +1,8 @@
 #include "debug_controller.h"
 
 #include "breakpoint_dialog.h"
-#include "keyed_action.h"
+#include "debug_entries.h"
+#include "debug_marks.h"
 #include "scan_debugger_view.h"
 #include "simulation_controller.h"
 #include "simulation_panel.h"
@@ -20,9 +21,6 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QStatusBar>
-#include <QStyle>
-
-#include <map>
 
 namespace rung::app {
 
@@ -82,20 +80,16 @@ DebugController::DebugController(editor::Document *document, editor::LadderView 
     connect(m_il, &editor::IlEditor::breakpointToggleRequested, this, [this](int line) {
         const int instruction = instructionAtLine(line);
         if (instruction < 0) {
-            statusBar()->showMessage(tr("No instruction on line %1 to stop at").arg(line), 5000);
+            statusBar()->showMessage(noInstructionOnLine(line), 5000);
             return;
         }
         m_simulation->toggleBreakpoint(instruction);
     });
     connect(m_ladder, &editor::LadderView::breakpointToggleRequested, this, [this](int rung) {
-        const auto &first = m_document->listing().rungFirst;
-        if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size() &&
-            first[static_cast<std::size_t>(rung)] < first[static_cast<std::size_t>(rung) + 1])
-            m_simulation->toggleBreakpoint(first[static_cast<std::size_t>(rung)]);
+        if (const int first = firstInstructionOfRung(*m_document, rung); first >= 0)
+            m_simulation->toggleBreakpoint(first);
         else
-            statusBar()->showMessage(
-                tr("Rung %1 is not in the instruction list: no breakpoint there").arg(rung + 1),
-                5000);
+            statusBar()->showMessage(noInstructionInRung(rung), 5000);
     });
     connect(m_simulation, &SimulationController::breakpointsChanged, this,
             &DebugController::updateBreakpointMarks);
@@ -139,35 +133,35 @@ DebugController::DebugController(editor::Document *document, editor::LadderView 
 DebugController::~DebugController() = default;
 
 void DebugController::addActions(QMenu *menu) {
-    const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
-                                  auto slot) {
-        return addKeyedAction(menu, this, name, text, key, slot);
-    };
-    menu->addSeparator();
-    add("simulationStepInstruction", tr("S&tep Instruction"), QKeySequence(Qt::CTRL | Qt::Key_F12),
-        [this] { m_simulation->stepInstruction(); })
-        ->setIcon(m_window->style()->standardIcon(QStyle::SP_ArrowRight));
-    add("simulationFinishScan", tr("F&inish Scan"), QKeySequence(Qt::SHIFT | Qt::Key_F12),
-        [this] { m_simulation->finishScan(); });
-    add("simulationToggleBreakpoint", tr("Toggle &Breakpoint"), QKeySequence(Qt::CTRL | Qt::Key_B),
-        [this] { toggleBreakpointHere(); });
-    add("simulationBreakpointCondition", tr("Breakpoint Co&ndition..."),
-        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B), [this] {
-            QString where;
-            const int instruction = instructionHere(&where);
-            if (instruction < 0)
-                statusBar()->showMessage(tr("No instruction at %1 to stop at").arg(where), 5000);
-            else
-                editBreakpointCondition(instruction);
-        });
-    menu->addAction(tr("Remove All Brea&kpoints"), m_simulation,
-                    &SimulationController::clearBreakpoints);
-    menu->addSeparator();
-    add("simulationReturnToLive", tr("Return to &Live"),
-        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L), [this] { m_simulation->returnToLive(); });
+    addDebugEntries(menu, "simulation", this, this); // debug_entries.h
     menu->addSeparator();
     menu->addAction(m_panelDock->toggleViewAction());
     menu->addAction(m_debugDock->toggleViewAction());
+}
+
+void DebugController::stepInstruction() {
+    m_simulation->stepInstruction();
+}
+
+void DebugController::finishScan() {
+    m_simulation->finishScan();
+}
+
+void DebugController::editBreakpointConditionHere() {
+    QString where;
+    const int instruction = instructionHere(&where);
+    if (instruction < 0)
+        statusBar()->showMessage(noInstructionAt(where), 5000);
+    else
+        editBreakpointCondition(instruction);
+}
+
+void DebugController::clearBreakpoints() {
+    m_simulation->clearBreakpoints();
+}
+
+void DebugController::returnToLive() {
+    m_simulation->returnToLive();
 }
 
 int DebugController::instructionAtLine(int line) const {
@@ -178,27 +172,15 @@ int DebugController::instructionAtLine(int line) const {
 }
 
 int DebugController::instructionHere(QString *where) const {
-    if (m_il->hasFocus()) {
-        int line = 0, index = 0;
-        m_il->getCursorPosition(&line, &index);
-        *where = tr("line %1").arg(line + 1);
-        return instructionAtLine(line + 1);
-    }
-    const auto &first = m_document->listing().rungFirst;
-    const int rung = m_ladder->cursor().rung;
-    *where = tr("rung %1").arg(rung + 1);
-    // A rung the list has no instruction of (a comment alone) has nowhere to stop.
-    if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size() &&
-        first[static_cast<std::size_t>(rung)] < first[static_cast<std::size_t>(rung) + 1])
-        return first[static_cast<std::size_t>(rung)];
-    return -1;
+    return app::instructionHere(*m_document, *m_ladder, *m_il,
+                                m_il->text() == m_document->listingText(), where);
 }
 
 void DebugController::toggleBreakpointHere() {
     QString where;
     const int instruction = instructionHere(&where);
     if (instruction < 0) {
-        statusBar()->showMessage(tr("No instruction at %1 to stop at").arg(where), 5000);
+        statusBar()->showMessage(noInstructionAt(where), 5000);
         return;
     }
     statusBar()->showMessage(m_simulation->toggleBreakpoint(instruction)
@@ -234,46 +216,13 @@ void DebugController::retranslate() {
 }
 
 void DebugController::updateBreakpointMarks() {
-    std::map<int, bool> lines;
-    std::map<int, bool> rungs;
-    const auto &printed = m_document->printedListing();
-    for (const SimulationController::BreakpointSpec &b : m_simulation->breakpoints()) {
-        const int at = m_simulation->instructionOf(b);
-        if (at < 0)
-            continue;
-        const bool conditional = b.when != simulator::Breakpoint::When::Always;
-        rungs[b.rung] = rungs[b.rung] || conditional;
-        if (static_cast<std::size_t>(at) < printed.instructionLine.size())
-            lines[printed.instructionLine[static_cast<std::size_t>(at)]] = conditional;
-    }
-    m_ladder->setBreakpointRungs(rungs);
-    m_il->setBreakpointLines(m_il->text() == m_document->listingText() ? lines
-                                                                       : std::map<int, bool>{});
+    markBreakpoints(*m_document, m_simulation->breakpoints(), *m_ladder, *m_il,
+                    m_il->text() == m_document->listingText());
 }
 
 void DebugController::showStoppedAt(int instruction) {
-    const auto &origin = m_document->listing().origin;
-    const auto &printed = m_document->printedListing();
-    if (instruction < 0 || static_cast<std::size_t>(instruction) >= origin.size()) {
-        m_ladder->setStoppedAt({-1, -1, -1});
-        m_il->setStoppedLine(0);
-        return;
-    }
-    const auto i = static_cast<std::size_t>(instruction);
-    const model::CellOrigin &o = origin[i];
-    editor::CellCursor at{o.rung, -1, -1};
-    const auto &rungs = m_document->ladder().rungs;
-    if (o.row >= 0 && o.rung >= 0 && static_cast<std::size_t>(o.rung) < rungs.size()) {
-        // An output stands in the output column, which every rung draws at gridColumns.
-        const bool output = o.column >= rungs[static_cast<std::size_t>(o.rung)].columns;
-        at.row = o.row;
-        at.column = output ? m_ladder->metrics().gridColumns : o.column;
-    }
-    m_ladder->setStoppedAt(at);
-    m_il->setStoppedLine(m_il->text() == m_document->listingText() &&
-                                 i < printed.instructionLine.size()
-                             ? printed.instructionLine[i]
-                             : 0);
+    markStoppedAt(*m_document, instruction, *m_ladder, *m_il,
+                  m_il->text() == m_document->listingText());
 }
 
 } // namespace rung::app

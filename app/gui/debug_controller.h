@@ -3,11 +3,11 @@
 // The simulation's docks (Simulation: run N scans, run for, speed, period, statistics,
 // history; Scan Debugger: the stopped scan and the breakpoints), breakpoints in the list's
 // margin and on the ladder's rungs, the stopped instruction shown in both views, and the
-// question an online edit asks. Keys (docs/user-guide.md): Ctrl+B toggles a breakpoint,
-// Ctrl+Shift+B its condition, Ctrl+F12 steps one instruction, Shift+F12 finishes the scan,
-// Ctrl+Shift+L returns from the history to live; all clear of the ladder's F5..F9 and
-// Ctrl+F9/F10 and of the other menus. It needs the document, the two views, the simulation and
-// a main window to dock into, not the Rung Studio window.
+// question an online edit asks. The menu's debugging entries and their keys are the table
+// both windows share (debug_entries.h). It needs the document, the two views, the simulation
+// and a main window to dock into, not the Rung Studio window.
+
+#include "app/gui/debug_entries.h"
 
 #include <QObject>
 
@@ -28,7 +28,7 @@ class ScanDebuggerView;
 class SimulationController;
 class SimulationPanel;
 
-class DebugController : public QObject {
+class DebugController : public QObject, public DebugCommands {
     Q_OBJECT
 
 public:
@@ -45,9 +45,15 @@ public:
     void addActions(QMenu *menu);
     // The docks' titles and panels in the language now installed.
     void retranslate();
+    // The menu's entries (DebugCommands), for the simulation.
+    void stepInstruction() override;
+    void finishScan() override;
     // Sets or clears a breakpoint where the user is: the instruction list's line when it has
     // the focus, else the ladder cursor's rung (its first instruction).
-    void toggleBreakpointHere();
+    void toggleBreakpointHere() override;
+    void editBreakpointConditionHere() override;
+    void clearBreakpoints() override;
+    void returnToLive() override;
     // Opens the condition of the breakpoint on an instruction (setting one if none).
     void editBreakpointCondition(int instruction);
 

@@ -4,13 +4,17 @@
 #include "app/gui/simulation_controller.h"
 #include "editor/timing_canvas.h"
 #include "model/target/address.h"
+#include "model/target/target_lists.h"
 #include "network/network_session.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -32,15 +36,45 @@ NetworkChart::NetworkChart(QWidget *parent)
     m_follow = new QCheckBox(this);
     m_follow->setChecked(true);
     connect(m_follow, &QCheckBox::toggled, this, [this] { refresh(); });
+    m_trigger = new QLineEdit(this);
+    m_trigger->setObjectName(QStringLiteral("networkChartTrigger"));
+    m_triggerAction = new QComboBox(this);
+    m_triggerAction->setObjectName(QStringLiteral("networkChartTriggerAction"));
+    m_triggerAction->addItems({QString(), QString()}); // Stop, Mark (retranslate)
+    m_arm = new QPushButton(this);
+    m_arm->setObjectName(QStringLiteral("networkChartArm"));
+    m_arm->setCheckable(true);
+    connect(m_arm, &QPushButton::toggled, this, [this](bool on) {
+        if (!on) {
+            emit disarmRequested();
+            return;
+        }
+        // Unchecked again until the window says it is armed (showTrigger).
+        {
+            const QSignalBlocker block(m_arm);
+            m_arm->setChecked(false);
+        }
+        emit armRequested(m_trigger->text(), m_triggerAction->currentIndex() == 0
+                                                 ? model::Trigger::Action::Stop
+                                                 : model::Trigger::Action::Mark);
+    });
+    connect(m_trigger, &QLineEdit::returnPressed, m_arm, [this] { m_arm->setChecked(true); });
     m_readout = new QLabel(this);
+    m_readout->setObjectName(QStringLiteral("networkChartReadout"));
     top->addWidget(m_add, 1);
     top->addWidget(m_follow);
-    top->addWidget(m_readout);
+    top->addWidget(m_trigger, 1);
+    top->addWidget(m_triggerAction);
+    top->addWidget(m_arm);
     layout->addLayout(top);
     m_canvas = new editor::TimingCanvas(this);
     m_canvas->setObjectName(QStringLiteral("networkChartCanvas"));
     m_canvas->setChannels(&m_channels);
     layout->addWidget(m_canvas, 1);
+    // Under the chart, as the single program's chart has it: a long trigger must not widen
+    // the window.
+    m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_readout);
     connect(m_canvas, &editor::TimingCanvas::zoomRequested, this, [this](double factor, qint64) {
         m_msPerPixel = std::clamp(m_msPerPixel * factor, 0.01, 100000.0);
         refresh();
@@ -69,6 +103,55 @@ void NetworkChart::retranslate() {
     m_add->setPlaceholderText(tr("Add station/device, e.g. %1").arg(example));
     m_follow->setText(tr("Follow"));
     m_canvas->setEmptyText(tr("Type a station's device above (%1) to draw it").arg(example));
+    // The example in the first station's own devices: a bit rises, a word compares.
+    QString word = QStringLiteral("STATION/WORD");
+    if (m_session && !m_session->stations().empty()) {
+        const network::StationSource *first = m_session->stations().front();
+        word = first->stationName() + QLatin1Char('/') + model::exampleWord(first->target(), 10);
+    }
+    m_trigger->setPlaceholderText(tr("Trigger: %1 rises, %2 > 100").arg(example, word));
+    m_trigger->setToolTip(tr("A condition on one station's device, checked after each of its "
+                             "scans: STATION/DEVICE rises, falls, or = <> < <= > >= VALUE (the "
+                             "same as Simulation > Stop When...)"));
+    m_triggerAction->setItemText(0, tr("Stop the network"));
+    m_triggerAction->setItemText(1, tr("Only mark"));
+    m_triggerAction->setToolTip(tr("Stop the network: every station pauses at the end of its "
+                                   "scan when the condition becomes true"));
+    m_arm->setText(tr("Arm"));
+    m_arm->setToolTip(tr("Watch for the trigger (Enter in its field does the same)"));
+    showTrigger(m_armed, m_triggerAction->currentIndex() == 0 ? model::Trigger::Action::Stop
+                                                              : model::Trigger::Action::Mark);
+}
+
+void NetworkChart::showTrigger(const QString &condition, model::Trigger::Action action) {
+    m_armed = condition;
+    const bool stop = action == model::Trigger::Action::Stop;
+    {
+        const QSignalBlocker block(m_arm);
+        m_arm->setChecked(!condition.isEmpty());
+    }
+    if (!condition.isEmpty()) {
+        m_trigger->setText(condition);
+        m_triggerAction->setCurrentIndex(stop ? 0 : 1);
+    }
+    m_triggerStatus = condition.isEmpty() ? QString()
+                      : stop              ? tr("Armed: stops the network when %1").arg(condition)
+                                          : tr("Armed: marks when %1").arg(condition);
+    refresh();
+}
+
+void NetworkChart::showTriggerFired(quint64 scan, qint64 timeMs, bool stopped) {
+    //: %1 the condition, %2 the virtual time, %3 the scan of its station
+    m_triggerStatus =
+        tr("%1 at %2 (scan %3)").arg(m_armed, SimulationController::clockText(timeMs)).arg(scan);
+    if (stopped)
+        placeCursor(timeMs); // the moment in view; the network shows it live
+    else
+        refresh();
+}
+
+QString NetworkChart::readoutText() const {
+    return m_readout->text();
 }
 
 void NetworkChart::changeEvent(QEvent *event) {
@@ -241,10 +324,24 @@ void NetworkChart::refresh() {
         window.changes.push_back(std::move(changes));
         window.knownFromMs.push_back(knownFromMs);
     }
+    // The moments the trigger became true, from its station's history.
+    const qsizetype slash = m_armed.indexOf(QLatin1Char('/'));
+    if (network::StationSource *station =
+            m_session && slash > 0 ? m_session->station(m_armed.left(slash).trimmed()) : nullptr)
+        station->readHistory([&](const model::HistoryRecorder &h) {
+            for (const auto &m : h.marks())
+                if (m.timeMs >= window.fromMs && m.timeMs <= window.toMs)
+                    window.marks.push_back(m);
+        });
     m_window = window;
     m_canvas->setWindow(window);
     const auto a = m_canvas->cursorTime(0);
-    m_readout->setText(a ? tr("A: %1").arg(SimulationController::clockText(*a)) : QString());
+    QStringList readout;
+    if (a)
+        readout << tr("A: %1").arg(SimulationController::clockText(*a));
+    if (!m_triggerStatus.isEmpty())
+        readout << m_triggerStatus;
+    m_readout->setText(readout.join(QStringLiteral("    ")));
 }
 
 } // namespace rung::app

@@ -7,9 +7,13 @@
 // row added after the fact reads from the network's history (network_history.h: every
 // station's words at every slice, as far as it reaches back). The drawing is the single program's
 // chart's canvas (editor/timing_canvas.h): zoom with Ctrl+wheel, scroll with the wheel, two
-// cursors.
+// cursors. Its trigger (STATION/CONDITION, "s2/D10 > 100") is the network's one trigger
+// (network_debug_controller.h, also set by Simulation > Stop When...): the chart asks for it
+// to be armed and shows what is armed; "Stop the network" pauses every station right after
+// the scan in which it becomes true, cursor A on that moment; "Only mark" marks the moments.
 
 #include "model/image/timing_data.h"
+#include "model/image/trigger.h"
 
 #include <QPointer>
 #include <QWidget>
@@ -17,8 +21,10 @@
 #include <vector>
 
 class QCheckBox;
+class QComboBox;
 class QLabel;
 class QLineEdit;
+class QPushButton;
 
 namespace rung::editor {
 class TimingCanvas;
@@ -50,10 +56,24 @@ public:
     // chosen in the Traffic view).
     void placeCursor(qint64 timeMs);
 
+    // The network's trigger as armed (empty: none): the field, the action and Arm show it.
+    void showTrigger(const QString &condition, model::Trigger::Action action);
+    // It became true after this scan (virtual time); `stopped`: the network paused there,
+    // cursor A is put on it.
+    void showTriggerFired(quint64 scan, qint64 timeMs, bool stopped);
+    QLineEdit *triggerField() const { return m_trigger; }
+    QComboBox *triggerAction() const { return m_triggerAction; }
+    QPushButton *armButton() const { return m_arm; }
+    // The readout under the chart: cursor A, the trigger.
+    QString readoutText() const;
+
 signals:
     void message(const QString &text);
     // The user put cursor A on this virtual time.
     void cursorMoved(qint64 timeMs);
+    // Arm (or Enter in the field) and disarm: the window arms the network's trigger.
+    void armRequested(const QString &condition, model::Trigger::Action action);
+    void disarmRequested();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -79,7 +99,12 @@ private:
     editor::TimingCanvas *m_canvas;
     QLineEdit *m_add;
     QCheckBox *m_follow;
+    QLineEdit *m_trigger;
+    QComboBox *m_triggerAction;
+    QPushButton *m_arm;
     QLabel *m_readout;
+    QString m_armed;         // the condition armed ("" none)
+    QString m_triggerStatus; // "Armed: ...", or when it became true
     double m_msPerPixel = 10.0;
     qint64 m_endMs = 0;
 };

@@ -1,7 +1,9 @@
 #include "app/gui/network_debug_controller.h"
 
 #include "app/gui/breakpoint_dialog.h"
-#include "app/gui/keyed_action.h"
+#include "app/gui/debug_entries.h"
+#include "app/gui/debug_marks.h"
+#include "app/gui/network_history_controller.h"
 #include "app/gui/scan_debug_subject.h"
 #include "app/gui/scan_debugger_view.h"
 
@@ -89,10 +91,11 @@ private:
 };
 
 NetworkDebugController::NetworkDebugController(QMainWindow *window, QTabWidget *tabs,
-                                               QObject *parent)
+                                               NetworkHistoryController *history, QObject *parent)
     : QObject(parent)
     , m_window(window)
-    , m_tabs(tabs) {
+    , m_tabs(tabs)
+    , m_history(history) {
     m_lists = new QStackedWidget(window);
     m_lists->setObjectName(QStringLiteral("networkLists"));
     m_tabs->addTab(m_lists, QString());
@@ -129,6 +132,10 @@ NetworkDebugController::NetworkDebugController(QMainWindow *window, QTabWidget *
         if (instruction >= 0 && static_cast<std::size_t>(instruction) < origin.size())
             s->parts.ladder->setCursor({origin[static_cast<std::size_t>(instruction)].rung, 0, 0});
     });
+
+    if (m_history)
+        connect(m_history, &NetworkHistoryController::historyChanged, this,
+                &NetworkDebugController::updateReturnAction);
 
     m_held = new QLabel(window);
     m_held->setObjectName(QStringLiteral("networkHeld"));
@@ -169,6 +176,7 @@ void NetworkDebugController::setSession(network::NetworkSession *session,
     }
     m_stations.clear();
     m_stopSource = nullptr;
+    m_triggerStop.clear();
     m_session = session;
     for (const StationParts &parts : stations) {
         Station s;
@@ -198,7 +206,7 @@ void NetworkDebugController::setSession(network::NetworkSession *session,
                 const int instruction =
                     st ? st->parts.document->printedListing().instructionAt(line) : -1;
                 if (instruction < 0)
-                    emit message(tr("No instruction on line %1 to stop at").arg(line));
+                    emit message(noInstructionOnLine(line));
                 else
                     toggleBreakpoint(name, instruction);
             }));
@@ -206,14 +214,11 @@ void NetworkDebugController::setSession(network::NetworkSession *session,
             s.parts.ladder, &editor::LadderView::breakpointToggleRequested, this,
             [this, name](int rung) {
                 const Station *st = find(name);
-                const auto &first = st->parts.document->listing().rungFirst;
-                if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size() &&
-                    first[static_cast<std::size_t>(rung)] <
-                        first[static_cast<std::size_t>(rung) + 1])
-                    toggleBreakpoint(name, first[static_cast<std::size_t>(rung)]);
+                if (const int first = st ? firstInstructionOfRung(*st->parts.document, rung) : -1;
+                    first >= 0)
+                    toggleBreakpoint(name, first);
                 else
-                    emit message(tr("Rung %1 is not in the instruction list: no breakpoint there")
-                                     .arg(rung + 1));
+                    emit message(noInstructionInRung(rung));
             }));
         Station *station = &s;
         m_connections.push_back(connect(s.parts.source, &model::MonitorSource::snapshotChanged,
@@ -237,8 +242,10 @@ void NetworkDebugController::setSession(network::NetworkSession *session,
                                           ? lines[std::size_t(instruction)]
                                           : 0));
             }));
-        m_connections.push_back(
-            connect(m_session, &network::NetworkSession::runStateChanged, this, [this] {
+        m_connections.push_back(connect(
+            m_session, &network::NetworkSession::runStateChanged, this, [this](RunState state) {
+                if (state != RunState::Paused)
+                    m_triggerStop.clear(); // it runs on, or starts again
                 emit m_subject->stateChanged();
                 updateHeld();
             }));
@@ -265,30 +272,12 @@ void NetworkDebugController::selectStation(const QString &name) {
 }
 
 void NetworkDebugController::addActions(QMenu *menu) {
-    const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
-                                  auto slot) {
-        return addKeyedAction(menu, this, name, text, key, slot);
-    };
-    // The main window's keys (debug_controller.h), clear of the ladder's F5..F9.
-    menu->addSeparator();
-    add("networkStepInstruction", tr("S&tep Instruction"), QKeySequence(Qt::CTRL | Qt::Key_F12),
-        [this] { stepInstruction(); })
-        ->setIcon(m_window->style()->standardIcon(QStyle::SP_ArrowRight));
-    add("networkFinishScan", tr("F&inish Scan"), QKeySequence(Qt::SHIFT | Qt::Key_F12),
-        [this] { finishScan(); });
-    add("networkToggleBreakpoint", tr("Toggle &Breakpoint"), QKeySequence(Qt::CTRL | Qt::Key_B),
-        [this] { toggleBreakpointHere(); });
-    add("networkBreakpointCondition", tr("Breakpoint Co&ndition..."),
-        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B), [this] {
-            QString where;
-            const int instruction = instructionHere(&where);
-            if (instruction < 0)
-                emit message(tr("No instruction at %1 to stop at").arg(where));
-            else
-                editBreakpointCondition(instruction);
-        });
-    menu->addAction(tr("Remove All Brea&kpoints"), this, &NetworkDebugController::clearBreakpoints);
-    menu->addSeparator();
+    // The main window's entries and keys (debug_entries.h).
+    const std::vector<QAction *> made = addDebugEntries(menu, "network", this, this);
+    for (QAction *a : made)
+        if (a->objectName() == QLatin1String("networkReturnToLive"))
+            m_returnAction = a;
+    updateReturnAction();
     QAction *when = menu->addAction(tr("Stop &When..."), this, [this] {
         const Station *shown = find(m_current);
         if (!shown) {
@@ -339,6 +328,25 @@ void NetworkDebugController::stepInstruction() {
 void NetworkDebugController::finishScan() {
     if (m_session)
         m_session->finishScan();
+}
+
+void NetworkDebugController::editBreakpointConditionHere() {
+    QString where;
+    const int instruction = instructionHere(&where);
+    if (instruction < 0)
+        emit message(noInstructionAt(where));
+    else
+        editBreakpointCondition(instruction);
+}
+
+void NetworkDebugController::returnToLive() {
+    if (m_history)
+        m_history->returnToLive();
+}
+
+void NetworkDebugController::updateReturnAction() {
+    if (m_returnAction)
+        m_returnAction->setEnabled(m_history && m_history->historyShown());
 }
 
 std::vector<NetworkDebugController::BreakpointSpec>
@@ -415,27 +423,15 @@ int NetworkDebugController::instructionHere(QString *where) const {
         *where = tr("no station");
         return -1;
     }
-    if (s->il->hasFocus()) {
-        int line = 0, index = 0;
-        s->il->getCursorPosition(&line, &index);
-        *where = tr("line %1").arg(line + 1);
-        return s->parts.document->printedListing().instructionAt(line + 1);
-    }
-    const auto &first = s->parts.document->listing().rungFirst;
-    const int rung = s->parts.ladder->cursor().rung;
-    *where = tr("rung %1").arg(rung + 1);
-    // A rung the list has no instruction of (a comment alone) has nowhere to stop.
-    if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size() &&
-        first[static_cast<std::size_t>(rung)] < first[static_cast<std::size_t>(rung) + 1])
-        return first[static_cast<std::size_t>(rung)];
-    return -1;
+    // The list is the program's own text (read-only here): always in step.
+    return app::instructionHere(*s->parts.document, *s->parts.ladder, *s->il, true, where);
 }
 
 void NetworkDebugController::toggleBreakpointHere() {
     QString where;
     const int instruction = instructionHere(&where);
     if (instruction < 0) {
-        emit message(tr("No instruction at %1 to stop at").arg(where));
+        emit message(noInstructionAt(where));
         return;
     }
     //: %1 the place ("line 3", "rung 2"), %2 the station
@@ -470,21 +466,8 @@ void NetworkDebugController::editBreakpointCondition(int instruction) {
 }
 
 void NetworkDebugController::updateMarks(const Station &station) {
-    std::map<int, bool> lines;
-    std::map<int, bool> rungs;
-    const editor::Document &doc = *station.parts.document;
-    const auto &printed = doc.printedListing();
-    for (const BreakpointSpec &b : breakpoints(station.parts.name)) {
-        const int at = SimulationController::instructionOf(doc.listing().rungFirst, b);
-        if (at < 0)
-            continue;
-        const bool conditional = b.when != simulator::Breakpoint::When::Always;
-        rungs[b.rung] = rungs[b.rung] || conditional;
-        if (static_cast<std::size_t>(at) < printed.instructionLine.size())
-            lines[printed.instructionLine[static_cast<std::size_t>(at)]] = conditional;
-    }
-    station.parts.ladder->setBreakpointRungs(rungs);
-    station.il->setBreakpointLines(lines);
+    markBreakpoints(*station.parts.document, breakpoints(station.parts.name), *station.parts.ladder,
+                    *station.il, true);
 }
 
 void NetworkDebugController::snapshotArrived(Station &station) {
@@ -500,28 +483,9 @@ void NetworkDebugController::snapshotArrived(Station &station) {
 }
 
 void NetworkDebugController::showStoppedAt(const Station &station, int instruction) {
-    // As the main window marks it (DebugController::showStoppedAt).
-    const editor::Document &doc = *station.parts.document;
-    const auto &origin = doc.listing().origin;
-    const auto &printed = doc.printedListing();
-    editor::LadderView *ladder = station.parts.ladder;
-    if (instruction < 0 || static_cast<std::size_t>(instruction) >= origin.size()) {
-        ladder->setStoppedAt({-1, -1, -1});
-        station.il->setStoppedLine(0);
-        return;
-    }
-    const auto i = static_cast<std::size_t>(instruction);
-    const model::CellOrigin &o = origin[i];
-    editor::CellCursor at{o.rung, -1, -1};
-    const auto &rungs = doc.ladder().rungs;
-    if (o.row >= 0 && o.rung >= 0 && static_cast<std::size_t>(o.rung) < rungs.size()) {
-        const bool output = o.column >= rungs[static_cast<std::size_t>(o.rung)].columns;
-        at.row = o.row;
-        at.column = output ? ladder->metrics().gridColumns : o.column;
-    }
-    ladder->setStoppedAt(at);
-    station.il->setStoppedLine(i < printed.instructionLine.size() ? printed.instructionLine[i] : 0);
-    station.il->ensureLineVisible(station.il->stoppedLine() - 1);
+    markStoppedAt(*station.parts.document, instruction, *station.parts.ladder, *station.il, true);
+    if (station.il->stoppedLine() > 0)
+        station.il->ensureLineVisible(station.il->stoppedLine() - 1);
 }
 
 QString NetworkDebugController::heldText() const {
@@ -534,7 +498,8 @@ QString NetworkDebugController::heldText() const {
                 .arg(s.parts.name)
                 .arg(i < lines.size() ? lines[i] : 0);
         }
-    return {};
+    //: the status bar while the network's trigger holds it: %1 the condition ("s2/D10 > 100")
+    return m_triggerStop.isEmpty() ? QString() : tr("Stopped: %1 became true").arg(m_triggerStop);
 }
 
 void NetworkDebugController::showDebugger() {

@@ -3,23 +3,37 @@
 #include "model/image/trigger.h"
 #include "network/network_session.h"
 
-// Stop When (network_debug_controller.h): a condition on one station's device, armed as that
-// station's trigger with the Stop action (network_session.h: the whole network pauses right
-// after the scan in which it fires).
+// The network's trigger (network_debug_controller.h): a condition on one station's device,
+// armed as that station's trigger (model/image/trigger.h). Stop When... and the timing chart's
+// trigger both set it: with the Stop action the whole network pauses right after the scan in
+// which it fires, every other station at its scan boundary (network_session.h); with Mark the
+// moment is only noted.
 
 namespace rung::app {
 
 bool NetworkDebugController::setStopCondition(const QString &text, QString *error) {
+    return setTrigger(text, model::Trigger::Action::Stop, error);
+}
+
+bool NetworkDebugController::setTrigger(const QString &text, model::Trigger::Action action,
+                                        QString *error) {
     const QString before = m_stopCondition;
+    const model::Trigger::Action actionBefore = m_triggerAction;
     m_stopCondition = text.trimmed();
+    m_triggerAction = action;
     if (armStopCondition(error)) {
-        emit message(m_stopCondition.isEmpty()
-                         ? tr("No stop condition")
-                         : tr("The network stops when %1 becomes true").arg(m_stopCondition));
+        emit message(m_stopCondition.isEmpty() ? tr("No stop condition")
+                     : action == model::Trigger::Action::Stop
+                         ? tr("The network stops when %1 becomes true").arg(m_stopCondition)
+                         //: %1 the condition ("s2/D10 > 100")
+                         : tr("The timing chart marks when %1 becomes true").arg(m_stopCondition));
+        emit triggerChanged();
         return true;
     }
     m_stopCondition = before;
+    m_triggerAction = actionBefore;
     armStopCondition(nullptr);
+    emit triggerChanged();
     return false;
 }
 
@@ -53,7 +67,7 @@ bool NetworkDebugController::armStopCondition(QString *error) {
         return false;
     }
     model::Trigger trigger = std::get<model::Trigger>(parsed);
-    trigger.action = model::Trigger::Action::Stop;
+    trigger.action = m_triggerAction;
     if (!source->setTrigger(trigger)) {
         if (error)
             *error = tr("%1 cannot be watched in %2").arg(m_stopCondition, s->parts.name);
@@ -63,12 +77,19 @@ bool NetworkDebugController::armStopCondition(QString *error) {
     const QString name = s->parts.name;
     connect(source, &model::MonitorSource::triggered, this,
             [this, name](quint64 scan, qint64 timeMs) {
-                emit stationWanted(name);
-                //: %1 the condition ("s2/D10 > 100"), %2 scan number, %3 virtual time
-                emit message(tr("%1 became true after scan %2 (%3): the network stopped there")
-                                 .arg(m_stopCondition)
-                                 .arg(scan)
-                                 .arg(SimulationController::clockText(timeMs)));
+                const bool stopped = m_triggerAction == model::Trigger::Action::Stop;
+                if (stopped) {
+                    // Shown as a breakpoint's stop is: the station, and what stopped it.
+                    m_triggerStop = m_stopCondition;
+                    emit stationWanted(name);
+                    //: %1 the condition ("s2/D10 > 100"), %2 scan number, %3 virtual time
+                    emit message(tr("%1 became true after scan %2 (%3): the network stopped there")
+                                     .arg(m_stopCondition)
+                                     .arg(scan)
+                                     .arg(SimulationController::clockText(timeMs)));
+                    updateHeld();
+                }
+                emit triggerFired(scan, timeMs, stopped);
             });
     return true;
 }

@@ -7,7 +7,6 @@
 #include "network/network_session.h"
 #include "network/station_past_source.h"
 
-#include <QAction>
 #include <QEvent>
 #include <QLabel>
 
@@ -21,8 +20,7 @@ NetworkHistoryController::NetworkHistoryController(NetworkChart *chart, NetworkT
     : QObject(parent)
     , m_watch(watch)
     , m_show(std::move(show))
-    , m_label(new QLabel)
-    , m_return(new QAction(this)) {
+    , m_label(new QLabel) {
     m_label->setObjectName(QStringLiteral("networkHistoryStatus"));
     // A past instant is never taken for the live network: bold on amber, as the single
     // program's window marks its history (simulation_menu.cpp).
@@ -30,10 +28,6 @@ NetworkHistoryController::NetworkHistoryController(NetworkChart *chart, NetworkT
         "QLabel { background: #ffd54f; color: #3e2700; font-weight: bold; padding: 0 6px; }"));
     m_label->hide();
     m_label->installEventFilter(this);
-    m_return->setObjectName(QStringLiteral("networkReturnToLive"));
-    m_return->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
-    m_return->setEnabled(false);
-    connect(m_return, &QAction::triggered, this, &NetworkHistoryController::returnToLive);
     // Cursor A (cursor B only measures) and a frame chosen in the Traffic view.
     connect(chart, &NetworkChart::cursorMoved, this,
             [this](qint64 timeMs) { showAt(timeMs * 1000); });
@@ -52,7 +46,6 @@ NetworkHistoryController::~NetworkHistoryController() {
 }
 
 void NetworkHistoryController::retranslate() {
-    m_return->setText(tr("Return to &Live"));
     update();
 }
 
@@ -157,7 +150,6 @@ QString NetworkHistoryController::historyText() const {
 }
 
 void NetworkHistoryController::update() {
-    m_return->setEnabled(m_shownUs.has_value());
     if (!m_label)
         return;
     m_label->setVisible(m_shownUs.has_value());

@@ -19,7 +19,6 @@
 #include <optional>
 #include <vector>
 
-class QAction;
 class QLabel;
 
 namespace rung::model {
@@ -65,10 +64,9 @@ public:
 
     // "History: 0:00:12.34, every station (read-only)"; empty while live.
     QString historyText() const;
-    // The amber mark for the status bar (hidden while live) and Return to Live (Ctrl+Shift+L,
-    // as in the main window), for the window's menu.
+    // The amber mark for the status bar (hidden while live). Return to Live (Ctrl+Shift+L) is
+    // the Simulation menu's debugging entry (network_debug_controller.h).
     QLabel *label() const { return m_label; }
-    QAction *returnAction() const { return m_return; }
 
 signals:
     // Translated, for the status bar.
@@ -90,7 +88,6 @@ private:
     std::vector<std::unique_ptr<network::StationPastSource>> m_past; // per station, in order
     std::optional<qint64> m_shownUs;
     QLabel *m_label;
-    QAction *m_return;
 };
 
 } // namespace rung::app

@@ -6,7 +6,8 @@
 // beneath them joining the ports. Zoomable (Ctrl+wheel, Ctrl++ / Ctrl+- / Ctrl+0); a click
 // selects a station, a port or a wire; a drag from one port to another wires them; Delete
 // removes what is selected (a station after saying what goes with it); the context menu holds
-// every edit of NetworkDocument. Double-click on a station asks for its program.
+// every edit of NetworkDocument. Double-click on a station asks for its program. The drawing and
+// the mouse are the canvas's (network_canvas.h), the edits the view's.
 
 #include "network/network_file.h"
 

@@ -3,7 +3,9 @@
 // list and ladder mark the place, the Scan Debugger follows it, the other stations wait at
 // their scan boundary; a step moves the held station alone; Continue runs the network on.
 
+#include "app/gui/debug_entries.h"
 #include "app/gui/language.h"
+#include "app/gui/network_chart.h"
 #include "app/gui/network_debug_controller.h"
 #include "app/gui/network_window.h"
 #include "app/gui/scan_debugger_view.h"
@@ -12,11 +14,14 @@
 #include "editor/document.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
+#include "editor/timing_canvas.h"
 #include "network/network_session.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTabWidget>
@@ -271,6 +276,133 @@ TEST(NetworkDebug, PausedAtABreakpointFitsTheScreenInEveryLanguage) {
                                  .arg(shots, QLatin1String(language)));
         }
         session->pause();
+    }
+    ASSERT_TRUE(app::setLanguage(QStringLiteral("en"), false));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+}
+
+// The timing chart's trigger in the network window is the network's trigger: "Stop the
+// network" pauses every station right after the scan in which the condition becomes true (the
+// others at their scan boundary), shown as a breakpoint's stop is (the station selected, the
+// status bar and the held mark naming the condition), cursor A on that moment; Stop When...
+// shows in the chart's field; "Only mark" lets the network run on and marks the moment.
+TEST(NetworkDebug, TheTimingChartsTriggerStopsTheWholeNetworkAndSaysWhichStationAndCondition) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(kCpuLink, QString(), true));
+    app::NetworkWindow *net = debuggedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    app::NetworkDebugController *debug = net->debugger();
+    network::NetworkSession *session = net->session();
+    app::NetworkChart *chart = net->chart();
+    ASSERT_TRUE(net->selectStation(QStringLiteral("master")));
+
+    // A station that is not there: not armed, why in the status bar.
+    chart->triggerField()->setText(QStringLiteral("nobody/D0 > 1"));
+    chart->armButton()->click();
+    EXPECT_FALSE(chart->armButton()->isChecked());
+    EXPECT_TRUE(debug->stopCondition().isEmpty());
+    EXPECT_TRUE(net->statusBar()->currentMessage().contains(QStringLiteral("master, slave1")))
+        << net->statusBar()->currentMessage().toStdString();
+
+    // slave1's first scan moves K3 into D9080 (its display mode).
+    chart->triggerField()->setText(QStringLiteral("slave1/D9080 = 3"));
+    EXPECT_EQ(chart->triggerAction()->currentIndex(), 0); // Stop the network
+    EXPECT_EQ(chart->triggerAction()->currentText(), QStringLiteral("Stop the network"));
+    chart->armButton()->click();
+    EXPECT_TRUE(chart->armButton()->isChecked());
+    EXPECT_EQ(debug->stopCondition(), QStringLiteral("slave1/D9080 = 3"));
+    EXPECT_EQ(debug->triggerAction(), model::Trigger::Action::Stop);
+    EXPECT_TRUE(chart->readoutText().contains(QStringLiteral("Armed")));
+
+    QSignalSpy fired(session->station(QStringLiteral("slave1")), &model::MonitorSource::triggered);
+    session->setSpeed(0);
+    networkAction(*net, "networkRun")->trigger();
+    ASSERT_TRUE(eventually([&] { return fired.count() == 1; }));
+    ASSERT_TRUE(eventually([&] { return session->runState() == RunState::Paused; }));
+    // At the scan boundary: slave1's first scan (10 ms), no station inside a scan.
+    EXPECT_EQ(session->nowUs(), 10000);
+    EXPECT_FALSE(heldInside(session, "master"));
+    EXPECT_FALSE(heldInside(session, "slave1"));
+    EXPECT_FALSE(heldInside(session, "slave2"));
+    // Shown as a breakpoint's stop: the station, the condition.
+    EXPECT_EQ(net->currentStation(), QStringLiteral("slave1"));
+    EXPECT_TRUE(net->statusBar()->currentMessage().contains(QStringLiteral("slave1/D9080 = 3")))
+        << net->statusBar()->currentMessage().toStdString();
+    auto *held = net->findChild<QLabel *>(QStringLiteral("networkHeld"));
+    ASSERT_NE(held, nullptr);
+    EXPECT_TRUE(held->isVisibleTo(net));
+    EXPECT_EQ(held->text(), QStringLiteral("Stopped: slave1/D9080 = 3 became true"));
+    // The chart: cursor A on the moment, and what fired.
+    EXPECT_EQ(chart->canvas()->cursorTime(0), std::optional<qint64>(10));
+    EXPECT_TRUE(chart->readoutText().contains(QStringLiteral("slave1/D9080 = 3 at")))
+        << chart->readoutText().toStdString();
+    EXPECT_TRUE(chart->readoutText().contains(QStringLiteral("(scan 1)")))
+        << chart->readoutText().toStdString();
+
+    // Run goes on (the condition stays true: no second stop); the held mark goes.
+    networkAction(*net, "networkRun")->trigger();
+    EXPECT_TRUE(eventually([&] { return session->nowUs() > 100000; }));
+    EXPECT_FALSE(held->isVisibleTo(net));
+    networkAction(*net, "networkPause")->trigger();
+    ASSERT_TRUE(eventually([&] { return session->runState() == RunState::Paused; }));
+
+    // Stop When... sets the same trigger: the chart shows it.
+    QString error;
+    ASSERT_TRUE(debug->setStopCondition(QStringLiteral("master/D0 > 1000"), &error))
+        << error.toStdString();
+    EXPECT_EQ(chart->triggerField()->text(), QStringLiteral("master/D0 > 1000"));
+    EXPECT_TRUE(chart->armButton()->isChecked());
+    // Disarmed from the chart: none.
+    chart->armButton()->click();
+    EXPECT_TRUE(debug->stopCondition().isEmpty());
+    EXPECT_FALSE(chart->armButton()->isChecked());
+
+    // Only mark: the network runs on past the moment, which the chart marks.
+    networkAction(*net, "networkStop")->trigger();
+    ASSERT_TRUE(eventually([&] { return net->session() && net->session()->nowUs() == 0; }));
+    session = net->session();
+    chart->triggerField()->setText(QStringLiteral("slave1/D9080 = 3"));
+    chart->triggerAction()->setCurrentIndex(1);
+    chart->armButton()->click();
+    ASSERT_EQ(debug->triggerAction(), model::Trigger::Action::Mark);
+    QSignalSpy marked(session->station(QStringLiteral("slave1")), &model::MonitorSource::triggered);
+    session->setSpeed(0);
+    session->runFor(200);
+    ASSERT_TRUE(eventually([&] { return marked.count() == 1; }));
+    ASSERT_TRUE(eventually([&] { return session->runState() == RunState::Paused; }));
+    EXPECT_GT(session->nowUs(), 10000);
+    EXPECT_TRUE(eventually([&] { return chart->window().marks.size() == 1; }));
+    EXPECT_FALSE(held->isVisibleTo(net));
+}
+
+// The debugging entries of both Simulation menus come from one table (debug_entries.h): the
+// same text, access key, key and tooltip in the main window and the network window, in every
+// language, each translated once.
+TEST(NetworkDebug, BothWindowsMakeTheirDebugEntriesFromOneTable) {
+    for (const char *language : {"en", "hu", "it"}) {
+        SCOPED_TRACE(language);
+        ASSERT_TRUE(app::setLanguage(QString::fromLatin1(language), false));
+        app::MainWindow window;
+        app::NetworkWindow network;
+        ASSERT_EQ(app::debugEntries().size(), 6u);
+        for (const app::DebugEntry &e : app::debugEntries()) {
+            SCOPED_TRACE(e.name);
+            auto *single =
+                window.findChild<QAction *>(QStringLiteral("simulation") + QLatin1String(e.name));
+            auto *net =
+                network.findChild<QAction *>(QStringLiteral("network") + QLatin1String(e.name));
+            ASSERT_NE(single, nullptr);
+            ASSERT_NE(net, nullptr);
+            const QString text = QCoreApplication::translate("rung::app::DebugEntries", e.text);
+            EXPECT_EQ(single->text(), text);
+            EXPECT_EQ(net->text(), text);
+            EXPECT_TRUE(text.contains(QLatin1Char('&'))) << text.toStdString();
+            if (QLatin1String(language) != QLatin1String("en"))
+                EXPECT_NE(text, QString::fromLatin1(e.text)) << "not translated";
+            EXPECT_EQ(single->shortcut(), QKeySequence(e.key));
+            EXPECT_EQ(net->shortcut(), QKeySequence(e.key));
+            EXPECT_EQ(single->toolTip(), net->toolTip());
+        }
     }
     ASSERT_TRUE(app::setLanguage(QStringLiteral("en"), false));
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);

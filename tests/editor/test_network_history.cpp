@@ -196,7 +196,8 @@ TEST(NetworkHistoryWindow, AFrameChosenInTheTrafficViewShowsItsInstantAndReturnT
     EXPECT_GT(*history->shownUs(), traffic->record(0).startUs - 10'000);
     EXPECT_TRUE(eventually([&] { return historyWatched(watch, 0) == QStringLiteral("0"); }));
     // Return to Live, from the Simulation menu.
-    QAction *live = history->returnAction();
+    QAction *live = net->findChild<QAction *>(QStringLiteral("networkReturnToLive"));
+    ASSERT_NE(live, nullptr);
     ASSERT_TRUE(live->isEnabled());
     EXPECT_FALSE(live->associatedObjects().isEmpty());
     live->trigger();
