@@ -41,6 +41,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <QWidgetAction>
 
 namespace rung::app {
 
@@ -251,6 +252,11 @@ void NetworkWindow::buildWindow() {
 }
 
 void NetworkWindow::buildMenus() {
+    // Made again on a language change: the old menus go with their entries (a stale entry
+    // would double its shortcut, which Qt then runs for neither). The station selector lives
+    // on: its action belongs to the window, not to the toolbar that shows it.
+    for (QMenu *menu : menuBar()->findChildren<QMenu *>(Qt::FindDirectChildrenOnly))
+        delete menu;
     menuBar()->clear();
     for (QToolBar *bar : findChildren<QToolBar *>())
         delete bar;
@@ -369,8 +375,10 @@ void NetworkWindow::buildMenus() {
                 m_tabs->currentWidget() != m_debug->listPage())
                 m_tabs->setCurrentWidget(m_ladders);
         });
+        m_selectorAction = new QWidgetAction(this);
+        m_selectorAction->setDefaultWidget(m_selector);
     }
-    tools->addWidget(m_selector);
+    tools->addAction(m_selectorAction);
 
     m_faultsMenu = menuBar()->addMenu(tr("F&aults"));
     m_faultsMenu->setObjectName(QStringLiteral("networkFaultsMenu"));

@@ -15,6 +15,7 @@
 
 class QAction;
 class QComboBox;
+class QWidgetAction;
 class QLabel;
 class QListWidget;
 class QMenu;
@@ -129,6 +130,7 @@ private:
     std::unique_ptr<network::NetworkSession> m_session;
     std::vector<StationView> m_views;
     QComboBox *m_selector = nullptr;
+    QWidgetAction *m_selectorAction = nullptr; // the selector on the toolbar (buildMenus)
     QStackedWidget *m_ladders = nullptr;
     QStackedWidget *m_ioPanels = nullptr;
     QListWidget *m_stationList = nullptr;

@@ -3,6 +3,7 @@
 // in the network's watch table, a wire cut from the Faults menu raises the master's error, and
 // a station's program opens in the main window for editing.
 
+#include "app/gui/language.h"
 #include "app/gui/network_chart.h"
 #include "app/gui/network_document.h"
 #include "app/gui/network_traffic_model.h"
@@ -23,6 +24,8 @@
 #include <QMenu>
 #include <QSignalSpy>
 #include <QTableView>
+
+#include <map>
 
 namespace rung::test {
 namespace {
@@ -64,6 +67,35 @@ TEST(NetworkWindow, OpeningANetworkFileShowsItsStationsInAWindowOfItsOwn) {
                     .contains(QStringLiteral("LINK D1000 D100")));
     // The main window still shows its own program: nothing of it was replaced.
     EXPECT_FALSE(window.document()->listingText().contains(QStringLiteral("LINK")));
+}
+
+// The menus are made again in the new language: the old ones go, so no entry is there twice
+// (two actions with one shortcut make it ambiguous, and Qt then runs neither).
+TEST(NetworkWindow, ALanguageChangeLeavesOneOfEachMenuEntry) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    const auto entries = [net] {
+        std::map<QString, int> count;
+        for (const QAction *a : net->findChildren<QAction *>())
+            if (!a->objectName().isEmpty())
+                ++count[a->objectName()];
+        return count;
+    };
+    const std::map<QString, int> before = entries();
+    ASSERT_EQ(before.at(QStringLiteral("networkRun")), 1);
+    for (const char *language : {"hu", "it", "en"}) {
+        ASSERT_TRUE(app::setLanguage(QString::fromLatin1(language), false));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        QCoreApplication::processEvents();
+    }
+    EXPECT_EQ(entries(), before);
+    EXPECT_EQ(net->menuBar()->findChildren<QMenu *>(Qt::FindDirectChildrenOnly).size(),
+              net->menuBar()->actions().size());
+    // The one Run there is runs the network.
+    net->findChild<QAction *>(QStringLiteral("networkRun"))->trigger();
+    EXPECT_TRUE(eventually([&] { return net->session()->runState() == RunState::Running; }));
 }
 
 TEST(NetworkWindow, TheStationSelectorChoosesWhatTheLadderShows) {
