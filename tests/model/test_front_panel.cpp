@@ -307,6 +307,7 @@ TEST(FrontPanel, Cpm1ErrorAlarmBlinksOnANonFatalErrorAndIsLitOnAFatalOne) {
     EXPECT_TRUE(alarm(500, true, R::Stopped).lit);
     EXPECT_EQ(alarm(500, true, R::Stopped).blinkMs, 0);
     EXPECT_FALSE(lamp(image.view(R::Stopped, nullptr, 0, true), "RUN")->lit);
+    image.set("253", 0);
     EXPECT_FALSE(alarm(0, false, R::Stopped).lit) << "stopped without an error: dark";
     // Without power nothing is lit.
     EXPECT_FALSE(lamp(image.view(R::Offline, nullptr, 0), "ERROR/ALARM")->lit);
