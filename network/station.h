@@ -9,6 +9,7 @@
 #include "model/comm/plc_port.h"
 #include "simulator/engine.h"
 
+#include <algorithm>
 #include <map>
 
 namespace rung::network {
