@@ -14,11 +14,18 @@ namespace rung::network {
 
 namespace {
 
-enum class Protocol { VigorLink, Modbus };
+using Protocol = model::ProtocolId;
 
 QString protocolName(Protocol p) {
-    return p == Protocol::VigorLink ? NetworkCheckTr::tr("Computer Link")
-                                    : NetworkCheckTr::tr("MODBUS");
+    switch (p) {
+    case Protocol::VigorLink:
+        return NetworkCheckTr::tr("Computer Link");
+    case Protocol::Modbus:
+        return NetworkCheckTr::tr("MODBUS");
+    case Protocol::HostLink:
+        return NetworkCheckTr::tr("Host Link");
+    }
+    return {};
 }
 
 // What a port or device on a wire answers: its protocol and station number.
@@ -33,10 +40,8 @@ std::vector<Answerer> answerers(const Wire &wire) {
     for (Endpoint *e : wire.ends) {
         if (auto *port = dynamic_cast<StationPort *>(e)) {
             const model::PortApplication &app = *port->config().application;
-            if (app.answersVigorLink)
-                out.push_back({Protocol::VigorLink, port->config().station, port->name});
-            else if (app.answersModbus && port->config().station > 0)
-                out.push_back({Protocol::Modbus, port->config().station, port->name});
+            if (model::answersAt(app, port->config().station))
+                out.push_back({*app.answers, port->config().station, port->name});
         } else if (auto *device = dynamic_cast<ModbusSlaveDevice *>(e)) {
             out.push_back({Protocol::Modbus, device->station, device->name});
         }

@@ -37,7 +37,9 @@ comms::slave::ImageChange EngineImage::setMode(comms::slave::OperatingMode mode,
         change.message =
             EngineImageTr::tr("a station of a network keeps running: it is not stopped from "
                               "its port");
+        return change;
     }
+    m_mode = mode;
     return change;
 }
 

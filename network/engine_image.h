@@ -18,7 +18,9 @@ public:
     std::shared_ptr<const model::Snapshot> snapshot() const override;
     comms::slave::ImageChange apply(const std::vector<model::DeviceCommand> &commands,
                                     QDeadlineTimer deadline) override;
-    comms::slave::OperatingMode mode() const override { return comms::slave::OperatingMode::Run; }
+    // RUN, or MONITOR once a master asked for it (Host Link SC 02: W353, writes are refused in
+    // RUN): the program runs in both.
+    comms::slave::OperatingMode mode() const override { return m_mode; }
     comms::slave::ImageChange setMode(comms::slave::OperatingMode mode,
                                       QDeadlineTimer deadline) override;
 
@@ -27,6 +29,7 @@ private:
     // The snapshot of the last scan, taken once for the requests answered after it.
     mutable std::shared_ptr<const model::Snapshot> m_snapshot;
     mutable quint64 m_scans = ~quint64(0);
+    comms::slave::OperatingMode m_mode = comms::slave::OperatingMode::Run;
 };
 
 } // namespace rung::network

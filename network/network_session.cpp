@@ -368,8 +368,7 @@ void NetworkSession::applyFaults(Network &network, std::vector<Fault> faults) {
 void NetworkSession::publish(Network &network, bool answer) {
     for (std::size_t i = 0; i < m_sources.size() && i < network.stations().size(); ++i)
         m_sources[i]->publishSnapshot(
-            std::make_shared<const model::Snapshot>(network.stations()[i]->engine().snapshot()),
-            answer);
+            std::make_shared<const model::Snapshot>(network.stations()[i]->snapshot()), answer);
     m_nowUs.store(network.nowUs(), std::memory_order_relaxed);
     const qint64 now = network.nowUs();
     post([this, now] { emit clockChanged(now); });

@@ -4,8 +4,7 @@
 #include "network/uart.h"
 
 #include "comms/protocol/plc_master.h"
-#include "comms/slave/modbus_responder.h"
-#include "comms/slave/vigor_responder.h"
+#include "comms/slave/responder.h"
 
 namespace rung::network {
 
@@ -30,9 +29,9 @@ StationPort::StationPort(Network *network, Station *station, model::PortConfig c
     // protocol: Computer Link for LINK, MODBUS for MBUS and COM / EXP. A master whose frames
     // the manual does not publish (the PL110's NAIS MATSUSHITA-MASTER) has none: its queries
     // put nothing on the wire and time out (docs/network.md).
-    if (app.answersVigorLink)
+    if (app.answers == model::ProtocolId::VigorLink)
         m_master = std::make_unique<comms::VigorLinkMaster>();
-    else if (app.answersModbus || (app.master && app.published))
+    else if (app.answers == model::ProtocolId::Modbus || (app.master && app.published))
         m_master = std::make_unique<comms::ModbusMaster>(
             m_config.modbusAscii ? comms::modbus::Framing::Ascii : comms::modbus::Framing::Rtu);
 }
@@ -40,21 +39,17 @@ StationPort::StationPort(Network *network, Station *station, model::PortConfig c
 StationPort::~StationPort() = default;
 
 void StationPort::makeResponder(const std::shared_ptr<EngineImage> &image) {
+    // The slaves' rule (model::answersAt: MODBUS station 0 answers nothing) and the responder
+    // of the protocol (comms::slave::makeResponder), as the virtual PLC answers it.
     const model::PortApplication &app = *m_config.application;
     const model::Target &target = m_station->target();
-    if (app.answersVigorLink) {
-        if (const auto *map = model::findProtocolMap(target, model::ProtocolId::VigorLink))
-            m_responder = std::make_unique<comms::slave::VigorResponder>(target, *map,
-                                                                         m_config.station, image);
-    } else if (app.answersModbus && m_config.station > 0) {
-        // Station 0 is MBUS's master (B-3-6): MODBUS unit 0 is the broadcast address, which
-        // no slave answers, so the port answers nothing.
-        if (const auto *map = model::findProtocolMap(target, model::ProtocolId::Modbus))
-            m_responder = std::make_unique<comms::slave::ModbusResponder>(
-                target, *map, m_config.station, image,
-                m_config.modbusAscii ? comms::modbus::Framing::Ascii : comms::modbus::Framing::Rtu,
-                m_line);
-    }
+    if (!model::answersAt(app, m_config.station))
+        return;
+    if (const auto *map = model::findProtocolMap(target, *app.answers))
+        m_responder = comms::slave::makeResponder(
+            target, *map, m_config.station, image,
+            m_config.modbusAscii ? comms::modbus::Framing::Ascii : comms::modbus::Framing::Rtu,
+            m_line);
 }
 
 qint64 StationPort::nowUs() const {
@@ -62,7 +57,8 @@ qint64 StationPort::nowUs() const {
 }
 
 qint64 StationPort::send(QByteArrayView bytes) {
-    return m_network->transmit(this, bytes.toByteArray());
+    m_sentUs = m_network->transmit(this, bytes.toByteArray());
+    return m_sentUs;
 }
 
 QByteArray StationPort::receive() {
@@ -135,7 +131,7 @@ void StationPort::answer(qint64 nowUs) {
     if (frames.size() > decided)
         m_lastAnsweredUs = m_lastUs; // the request's last byte
     for (const QByteArray &frame : frames)
-        m_network->transmit(this, frame);
+        m_sentUs = m_network->transmit(this, frame);
 }
 
 Station::Station(Network *network, QString name, const LoadedStation &loaded, qint64 periodMs)
@@ -153,6 +149,13 @@ Station::Station(Network *network, QString name, const LoadedStation &loaded, qi
 }
 
 Station::~Station() = default;
+
+model::Snapshot Station::snapshot() const {
+    model::Snapshot s = m_engine->snapshot();
+    for (const auto &[key, port] : m_ports)
+        s.communicatedUs = std::max(s.communicatedUs, port->communicatedUs());
+    return s;
+}
 
 StationPort *Station::findPort(const QString &name) const {
     for (const auto &[key, port] : m_ports)

@@ -9,6 +9,7 @@
 #include "model/comm/plc_port.h"
 #include "simulator/engine.h"
 
+#include <algorithm>
 #include <map>
 
 namespace rung::network {
@@ -46,6 +47,8 @@ public:
     // The slave's side after the station's scan: the requests that came, answered.
     void answer(qint64 nowUs);
     comms::slave::Responder *responder() const { return m_responder.get(); }
+    // The virtual time the port last received a byte or its last byte sent leaves; -1: never.
+    qint64 communicatedUs() const { return std::max(m_lastUs, m_sentUs); }
     void makeResponder(const std::shared_ptr<EngineImage> &image);
 
 private:
@@ -65,6 +68,7 @@ private:
     int m_frameAddress = -1;      // the first byte of the frame the responder is reading
     QByteArrayList feedResponder(QByteArray frame, bool silence);
     qint64 m_lastUs = -1;
+    qint64 m_sentUs = -1; // when the last byte it sent leaves
     int m_errors = 0;
 };
 
@@ -79,6 +83,9 @@ public:
     simulator::Engine &engine() { return *m_engine; }
     const simulator::Engine &engine() const { return *m_engine; }
     qint64 periodMs() const { return m_periodMs; }
+    // The engine's snapshot with what its ports did (Snapshot::communicatedUs: the front
+    // panel's COMM lamp).
+    model::Snapshot snapshot() const;
     const std::map<QString, std::unique_ptr<StationPort>> &ports() const { return m_ports; }
     StationPort *findPort(const QString &name) const;
     StationPort *addPort(model::PortConfig config);

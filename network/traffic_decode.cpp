@@ -201,16 +201,19 @@ TrafficDecoder::TrafficDecoder(const Network &network) {
                 end.modbusAscii = config.modbusAscii;
                 end.sharedLink = app.sharedLink != 0;
                 end.programDriven = app.programDriven;
-                if (app.answersVigorLink) {
+                // Host Link (a CPM1's peripheral port) is not decoded: its frames show as the
+                // text they are, under the application's name.
+                if (app.answers == model::ProtocolId::VigorLink) {
                     end.speaks = Speaks::VigorLink;
                     end.answers = true;
                     // LINK drives the port: its program is the master (Easy Link, B-3-3).
                     end.master = port->usedByProgram();
-                } else if (app.answersModbus || (app.master && app.published)) {
+                } else if (app.answers == model::ProtocolId::Modbus ||
+                           (app.master && app.published)) {
                     end.speaks = Speaks::Modbus;
                     // Station 0 of the Vigor's MODBUS is MBUS's master (B-3-6).
                     end.master = app.master || config.station == 0;
-                    end.answers = app.answersModbus && config.station > 0;
+                    end.answers = model::answersAt(app, config.station);
                     // A PL110 port its program may switch to free-port (SEND; PL110 manual
                     // 4.2.19) sends bytes of no protocol then.
                     const model::PortSpec *spec = end.target->port(config.port);

@@ -1110,6 +1110,11 @@ PLC after serve restarts</source>
         <source>PL110 free-port (SEND)</source>
         <translation>PL110 szabad port (SEND)</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>CPM1 peripheral port (Host Link) on a pseudo-terminal</source>
+        <translation>CPM1 perifériacsatlakozó (Host Link) pszeudoterminálon</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::FileController</name>
@@ -6200,7 +6205,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 nem írható ennek a PLC-nek a memóriájában</translation>
     </message>
     <message>
-        <location filename="../comms/slave/slave_server.cpp" line="+101"/>
+        <location filename="../comms/slave/slave_server.cpp" line="+87"/>
         <location line="+29"/>
         <source>%1 does not speak this protocol</source>
         <translation>a(z) %1 nem ismeri ezt a protokollt</translation>
@@ -8603,7 +8608,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::PanelView</name>
     <message>
-        <location filename="../model/image/panel_view.cpp" line="+114"/>
+        <location filename="../model/image/panel_view.cpp" line="+130"/>
         <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
         <translation>%1. kijelzési mód: a kézikönyv a(z) %2. módot (egy %3 jegyű érték) és a(z) %4. módot (két %5 jegyű érték) írja le</translation>
     </message>
@@ -9264,7 +9269,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Target</name>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+38"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+34"/>
+        <source>Host Link</source>
+        <translation>Host Link</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the CPU unit&apos;s peripheral port (Host Link, 9600 bps 7E2, unit 0)</source>
+        <translation>a CPU-egység perifériacsatlakozója (Host Link, 9600 bps 7E2, 0. egység)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>input channels</source>
         <translation>bemeneti csatornák</translation>
     </message>
@@ -9567,16 +9582,6 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>analóg beállítások</translation>
     </message>
     <message>
-        <location line="+43"/>
-        <source>lit on a fatal error: the CPU stopped; blinks on a non-fatal error (FAL 01..99 in 253.00..253.07): the CPU goes on</source>
-        <translation>világít lényegi hibánál: a CPU leállt; villog nem lényegi hibánál (FAL 01..99 a 253.00..253.07 biteken): a CPU tovább dolgozik</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>lit while the PLC communicates; a simulated CPM1 has no port, so it stays dark</source>
-        <translation>világít, amíg a PLC kommunikál; a szimulált CPM1-nek nincs portja, ezért sötét marad</translation>
-    </message>
-    <message>
         <location filename="../model/target/target_cpm1_instructions.cpp" line="+70"/>
         <source>subroutine number</source>
         <translation>szubrutin száma</translation>
@@ -9763,7 +9768,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az aktuális lépés lezárása és a B vezérlőbitű lépés indítása</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="-89"/>
+        <location filename="../model/target/target_cpm1.cpp" line="-37"/>
         <location filename="../model/target/target_vigor.cpp" line="+25"/>
         <source>No operation</source>
         <translation>Nincs művelet</translation>
@@ -11017,7 +11022,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Vigor CP2 MODBUS szolga</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+67"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+76"/>
         <source>lit while the PLC has power</source>
         <translation>világít, amíg a PLC feszültség alatt van</translation>
     </message>
@@ -11027,7 +11032,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>világít RUN vagy MONITOR üzemmódban; nem világít PROGRAM üzemmódban vagy hiba esetén</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+4"/>
+        <source>lit on a fatal error: the CPU stopped; blinks on a non-fatal error the CPU goes on after (FAL 01..99 in 253.00..253.07, an instruction skipped with ER 255.03)</source>
+        <translation>világít lényegi hibánál: a CPU leállt; villog nem lényegi hibánál, amely után a CPU tovább dolgozik (FAL 01..99 a 253.00..253.07 biteken, ER 255.03 mellett kihagyott utasítás)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>lit while the PLC communicates: a byte sent or received on its peripheral port within the last 0.2 s</source>
+        <translation>világít, amíg a PLC kommunikál: az utolsó 0,2 s-ban bájtot küldött vagy fogadott a perifériacsatlakozóján</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>analog setting: 0..200 as BCD into its channel</source>
         <translation>analóg beállítás: 0..200 BCD-ben a csatornájába</translation>
     </message>
@@ -11344,14 +11359,19 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkCheck</name>
     <message>
-        <location filename="../network/check.cpp" line="+20"/>
+        <location filename="../network/check.cpp" line="+22"/>
         <source>Computer Link</source>
         <translation>Computer Link</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>MODBUS</source>
         <translation>MODBUS</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Host Link</source>
+        <translation>Host Link</translation>
     </message>
     <message>
         <location line="+29"/>
@@ -11582,7 +11602,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>az IDE-ben okozott hiba</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+60"/>
         <source>%1: line %2: %3</source>
         <extracomment>%1 station, %2 line, %3 what went wrong</extracomment>
         <translation>%1: %2. sor: %3</translation>
@@ -11802,7 +11822,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+82"/>
         <source>MODBUS slave device</source>
         <translation>MODBUS slave eszköz</translation>
     </message>

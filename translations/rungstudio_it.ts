@@ -1112,6 +1112,11 @@ PLC dopo il riavvio di serve</translation>
         <source>PL110 free-port (SEND)</source>
         <translation>PL110 free-port (SEND)</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>CPM1 peripheral port (Host Link) on a pseudo-terminal</source>
+        <translation>Porta periferica del CPM1 (Host Link) su uno pseudo-terminale</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::FileController</name>
@@ -6214,7 +6219,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non si può scrivere nella memoria di questo PLC</translation>
     </message>
     <message>
-        <location filename="../comms/slave/slave_server.cpp" line="+101"/>
+        <location filename="../comms/slave/slave_server.cpp" line="+87"/>
         <location line="+29"/>
         <source>%1 does not speak this protocol</source>
         <translation>%1 non parla questo protocollo</translation>
@@ -8626,7 +8631,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::PanelView</name>
     <message>
-        <location filename="../model/image/panel_view.cpp" line="+114"/>
+        <location filename="../model/image/panel_view.cpp" line="+130"/>
         <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
         <translation>Modo di visualizzazione %1: il manuale descrive il modo %2 (un valore di %3 cifre) e il modo %4 (due valori di %5 cifre)</translation>
     </message>
@@ -9287,7 +9292,17 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Target</name>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+38"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+34"/>
+        <source>Host Link</source>
+        <translation>Host Link</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the CPU unit&apos;s peripheral port (Host Link, 9600 bps 7E2, unit 0)</source>
+        <translation>la porta periferica dell&apos;unità CPU (Host Link, 9600 bps 7E2, unità 0)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>input channels</source>
         <translation>canali di ingresso</translation>
     </message>
@@ -9590,16 +9605,6 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>regolazioni analogiche</translation>
     </message>
     <message>
-        <location line="+43"/>
-        <source>lit on a fatal error: the CPU stopped; blinks on a non-fatal error (FAL 01..99 in 253.00..253.07): the CPU goes on</source>
-        <translation>acceso per un errore grave: la CPU si è fermata; lampeggia per un errore non grave (FAL 01..99 in 253.00..253.07): la CPU prosegue</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>lit while the PLC communicates; a simulated CPM1 has no port, so it stays dark</source>
-        <translation>acceso mentre il PLC comunica; un CPM1 simulato non ha porte, quindi resta spento</translation>
-    </message>
-    <message>
         <location filename="../model/target/target_cpm1_instructions.cpp" line="+70"/>
         <source>subroutine number</source>
         <translation>numero di subroutine</translation>
@@ -9786,7 +9791,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Termina la fase corrente e avvia la fase con bit di controllo B</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="-89"/>
+        <location filename="../model/target/target_cpm1.cpp" line="-37"/>
         <location filename="../model/target/target_vigor.cpp" line="+25"/>
         <source>No operation</source>
         <translation>Nessuna operazione</translation>
@@ -11040,7 +11045,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Vigor CP2 slave MODBUS</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+67"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+76"/>
         <source>lit while the PLC has power</source>
         <translation>acceso finché il PLC è alimentato</translation>
     </message>
@@ -11050,7 +11055,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>acceso in modo RUN o MONITOR; spento in modo PROGRAM o in caso di errore</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+4"/>
+        <source>lit on a fatal error: the CPU stopped; blinks on a non-fatal error the CPU goes on after (FAL 01..99 in 253.00..253.07, an instruction skipped with ER 255.03)</source>
+        <translation>acceso per un errore grave: la CPU si è fermata; lampeggia per un errore non grave dopo il quale la CPU prosegue (FAL 01..99 in 253.00..253.07, un&apos;istruzione saltata con ER 255.03)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>lit while the PLC communicates: a byte sent or received on its peripheral port within the last 0.2 s</source>
+        <translation>acceso mentre il PLC comunica: un byte inviato o ricevuto sulla sua porta periferica negli ultimi 0,2 s</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>analog setting: 0..200 as BCD into its channel</source>
         <translation>impostazione analogica: 0..200 in BCD nel suo canale</translation>
     </message>
@@ -11367,14 +11382,19 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkCheck</name>
     <message>
-        <location filename="../network/check.cpp" line="+20"/>
+        <location filename="../network/check.cpp" line="+22"/>
         <source>Computer Link</source>
         <translation>Computer Link</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>MODBUS</source>
         <translation>MODBUS</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Host Link</source>
+        <translation>Host Link</translation>
     </message>
     <message>
         <location line="+29"/>
@@ -11605,7 +11625,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>un guasto creato nell&apos;IDE</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+60"/>
         <source>%1: line %2: %3</source>
         <extracomment>%1 station, %2 line, %3 what went wrong</extracomment>
         <translation>%1: riga %2: %3</translation>
@@ -11827,7 +11847,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+82"/>
         <source>MODBUS slave device</source>
         <translation>dispositivo slave MODBUS</translation>
     </message>

@@ -45,6 +45,8 @@ constexpr ExampleTitle kTitles[] = {
     {"vb-1com", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "VB-1COM module (FROM / TO)")},
     {"pl110-exp", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "PL110 EXP1 MODBUS master")},
     {"pl110-free-port", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "PL110 free-port (SEND)")},
+    {"cpm1-host-link", QT_TRANSLATE_NOOP("rung::app::ExampleTitles",
+                                         "CPM1 peripheral port (Host Link) on a pseudo-terminal")},
 };
 
 } // namespace

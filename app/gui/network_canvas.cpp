@@ -88,7 +88,7 @@ void NetworkCanvas::relayout() {
                 // A station number means something where the port answers or links; a
                 // master's or a program's port has none.
                 const model::PortApplication &a = *config.application;
-                const bool numbered = a.answersVigorLink || a.answersModbus || a.sharedLink == 1;
+                const bool numbered = a.answers || a.sharedLink == 1;
                 QString second = numbered ? NetworkView::tr("station %1, %2 %3")
                                                 .arg(config.station)
                                                 .arg(config.line.baud)

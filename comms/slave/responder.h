@@ -4,7 +4,9 @@
 // PLC would answer. No I/O and no threads (SlaveServer has those), so each protocol's rules
 // are tested byte for byte. A responder may block in DeviceImage::apply() for a write.
 
+#include "comms/protocol/modbus.h"
 #include "comms/slave/mapped_image.h"
+#include "comms/transport/serial_settings.h"
 
 #include <QByteArrayList>
 
@@ -66,5 +68,13 @@ protected:
     SlaveStatistics m_statistics;
     QString m_lastProblem;
 };
+
+// The responder of the map's protocol: which class answers which protocol is said here once,
+// for the virtual PLC (SlaveServer) and a network station's ports alike. `framing` and `line`
+// are Modbus's (RTU or not, and the 3.5-character silence); the others ignore them.
+std::unique_ptr<Responder> makeResponder(const model::Target &target, const model::ProtocolMap &map,
+                                         int station, std::shared_ptr<DeviceImage> image,
+                                         modbus::Framing framing, const SerialSettings &line,
+                                         int writeTimeoutMs = 2000);
 
 } // namespace rung::comms::slave

@@ -1,8 +1,6 @@
 #include "comms/slave/slave_server.h"
 
-#include "comms/slave/host_link_responder.h"
-#include "comms/slave/modbus_responder.h"
-#include "comms/slave/vigor_responder.h"
+#include "comms/slave/responder.h"
 
 #include <QCoreApplication>
 
@@ -74,22 +72,10 @@ SlaveServer::~SlaveServer() {
 }
 
 std::unique_ptr<Responder> SlaveServer::makeResponder() const {
-    std::unique_ptr<Responder> r;
     const int station = m_options.station;
-    switch (m_options.protocol) {
-    case model::ProtocolId::VigorLink:
-        r = std::make_unique<VigorResponder>(m_target, *m_map, station, m_image,
-                                             m_options.writeTimeoutMs);
-        break;
-    case model::ProtocolId::Modbus:
-        r = std::make_unique<ModbusResponder>(m_target, *m_map, station, m_image, m_options.framing,
-                                              m_options.line, m_options.writeTimeoutMs);
-        break;
-    case model::ProtocolId::HostLink:
-        r = std::make_unique<HostLinkResponder>(m_target, *m_map, station, m_image,
-                                                m_options.writeTimeoutMs);
-        break;
-    }
+    std::unique_ptr<Responder> r =
+        slave::makeResponder(m_target, *m_map, station, m_image, m_options.framing, m_options.line,
+                             m_options.writeTimeoutMs);
     if (m_options.fault == Fault::WrongStation)
         r->setReplyStation(station + 1);
     return r;

@@ -2,14 +2,18 @@
 
 // A PLC's serial ports as target data (Target::ports): which ports a model has, the
 // applications each can run (what Ladder Master's "2nd COM Port Setting" offers, Vigor M/VB/VH
-// communication manual, B-3-1; the PL110's protocols, PL110 manual chapter 3 and 4.2.19 / 4.2.21),
+// communication manual, B-3-1; the PL110's protocols, PL110 manual chapter 3 and 4.2.19 / 4.2.21;
+// the CPM1's peripheral port, Omron CPM1 guide 2.1, and its Host Link),
 // their rates, formats and station numbers. The network file, a project's port settings and the
 // wiring checks read these tables and nothing else. target.h includes this header, so it must not
 // include target.h.
 
+#include "model/target/protocol_map.h"
+
 #include <QString>
 #include <QStringList>
 
+#include <optional>
 #include <vector>
 
 namespace rung::model {
@@ -44,10 +48,10 @@ struct PortApplication {
     int stationMin = 0;         // station numbers it takes
     int stationMax = 0;
     int station = 0; // the default
-    // The port answers a master as a slave would, with the protocol of the target's map
-    // (Computer Link, MODBUS slave).
-    bool answersVigorLink = false;
-    bool answersModbus = false;
+    // The port answers a master as a slave would, with this protocol through the target's map
+    // of it (Vigor Computer Link, MODBUS slave, Omron Host Link); nullopt: it answers nobody.
+    // answersAt() says at which station numbers.
+    std::optional<ProtocolId> answers;
     // The port's program is a master of this protocol (LINK: Computer Link; MBUS, COM/EXP:
     // MODBUS), so a wire may carry only one such port.
     bool master = false;
@@ -116,6 +120,14 @@ struct LinkDeviceCode {
 
 inline bool applicationOn(const PortApplication &a, const QString &model) {
     return a.models.isEmpty() || a.models.contains(model);
+}
+
+// Whether a port running `a` at station number `station` answers a master: the one rule the
+// network's slaves, its wiring checks and its traffic decoder read. MODBUS station 0 is the
+// broadcast address, which no slave answers (the Vigor's MBUS master is station 0, Vigor M/VB/VH
+// communication manual, B-3-6); Computer Link and Host Link number their stations from 0.
+inline bool answersAt(const PortApplication &a, int station) {
+    return a.answers && !(*a.answers == ProtocolId::Modbus && station == 0);
 }
 
 } // namespace rung::model

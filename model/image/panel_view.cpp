@@ -52,6 +52,12 @@ bool running(MonitorSource::RunState state) {
     return state == R::Running || state == R::Stepping || state == R::Paused;
 }
 
+// The source reports an error that stopped the CPU: any error, unless the target's manual
+// tells errors the CPU goes on after (FrontPanel::errorsGoOn) and the program runs on.
+bool faultStopped(const Target &target, const PanelInput &in) {
+    return in.fault && (!target.panel.errorsGoOn || !running(in.runState));
+}
+
 PanelLampView lampView(const Target &target, const PanelLamp &lamp, const PanelInput &in,
                        PanelView &view) {
     PanelLampView v{lamp.label, lamp.colour, false, 0, lamp.meaning};
@@ -61,7 +67,7 @@ PanelLampView lampView(const Target &target, const PanelLamp &lamp, const PanelI
         v.lit = in.runState != R::Offline;
         break;
     case LampSignal::Running:
-        if (in.fault || in.runState == R::Offline)
+        if (faultStopped(target, in) || in.runState == R::Offline)
             break;
         if (running(in.runState)) {
             v.lit = true;
@@ -73,20 +79,30 @@ PanelLampView lampView(const Target &target, const PanelLamp &lamp, const PanelI
     case LampSignal::Fault:
         v.lit = in.fault;
         break;
-    case LampSignal::Alarm:
-        // A fatal error: lit. A non-fatal one (its bits in the word ON): blinking. Neither: dark.
-        if (in.fault) {
+    case LampSignal::Alarm: {
+        // A fatal error: lit. A non-fatal one (the source's error while the program runs on,
+        // or its bits in the word ON): blinking. Neither: dark.
+        if (faultStopped(target, in)) {
             v.lit = true;
-        } else if (const auto a = panelDevice(target, lamp.device);
-                   a && (readValue(in, view, *a) & lamp.deviceMask) != 0 &&
-                   in.runState != MonitorSource::RunState::Offline && lamp.alarmBlinkMs > 0) {
+            break;
+        }
+        const auto a = panelDevice(target, lamp.device);
+        const bool alarm = in.fault || (a && (readValue(in, view, *a) & lamp.deviceMask) != 0);
+        if (alarm && in.runState != R::Offline && lamp.alarmBlinkMs > 0) {
             v.blinkMs = lamp.alarmBlinkMs;
             v.lit = (in.nowMs % (2 * lamp.alarmBlinkMs)) < lamp.alarmBlinkMs;
         }
         break;
+    }
     case LampSignal::Device:
         if (const auto a = panelDevice(target, lamp.device))
             v.lit = readBit(in, view, *a);
+        break;
+    case LampSignal::Communication:
+        // On the PLC's clock: a paused PLC keeps the lamp as it was at its last scan.
+        if (in.snapshot && in.snapshot->communicatedUs >= 0 && in.runState != R::Offline)
+            v.lit = in.snapshot->statistics.timeMs * 1000 - in.snapshot->communicatedUs <
+                    qint64(lamp.holdMs) * 1000;
         break;
     case LampSignal::Never:
         break;

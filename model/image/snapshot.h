@@ -60,6 +60,10 @@ struct Snapshot {
     // value lives in the program, and no protocol area holds it). Null: every word is the
     // memory's own (a simulation).
     std::shared_ptr<const std::vector<bool>> wordsRead;
+    // A network station: the virtual time (us, the clock of statistics.timeMs) at which a port
+    // of the PLC last received a byte or its last byte sent leaves; -1: never, or nothing is
+    // known of its ports (a PLC simulated alone has none, an online PLC is not asked).
+    qint64 communicatedUs = -1;
 
     bool bit(const Address &address) const {
         const BitRef r = layout ? layout->bit(address) : BitRef{};

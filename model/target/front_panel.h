@@ -23,13 +23,18 @@ enum class LampSignal : std::uint8_t {
     Power,   // the PLC has power: the source is not Offline
     Running, // the program runs (a paused simulation is a PLC in RUN frozen in time)
     Fault,   // the source reports an error that stopped the program
-    // Fault, and besides it blinks (PanelLamp::alarmBlinkMs) while the word `device` has a bit
-    // of `deviceMask` ON: a non-fatal error the program goes on after (Omron CPM1 guide 2.1,
-    // ERROR/ALARM "Villog: Nem lényegi hiba, a CPU tovább dolgozik"; the FAL number in 253.00..
-    // 253.07, W353 FAL(06)).
+    // Lit on an error that stopped the CPU; blinks (PanelLamp::alarmBlinkMs) on a non-fatal
+    // error the program goes on after (Omron CPM1 guide 2.1, ERROR/ALARM "Villog: Nem lényegi
+    // hiba, a CPU tovább dolgozik"): while the word `device` has a bit of `deviceMask` ON (the
+    // FAL number in 253.00..253.07, W353 FAL(06)), and, where FrontPanel::errorsGoOn, while the
+    // source reports an error and the program runs on.
     Alarm,
     Device, // a bit device of the table (PL110 COM1: its port's "transmitting" marker)
-    Never,  // what lights it is not simulated; the lamp is shown dark with its meaning
+    // Lit while a port of the PLC sent or received a byte within the last PanelLamp::holdMs of
+    // simulated time (Snapshot::communicatedUs: a network station's ports); dark where nothing
+    // is known of its ports (a PLC simulated alone has none).
+    Communication,
+    Never, // what lights it is not simulated; the lamp is shown dark with its meaning
 };
 
 struct PanelLamp {
@@ -47,6 +52,8 @@ struct PanelLamp {
     // (this many ms on and as many off).
     int deviceMask = 0xffff;
     int alarmBlinkMs = 0;
+    // LampSignal::Communication: how long after a port's last byte the lamp stays lit.
+    int holdMs = 0;
 };
 
 // A lamp for each element of an area the model has, labelled by its address and lit while its
@@ -176,6 +183,13 @@ struct FrontPanel {
     std::vector<PanelKnob> knobs;
     std::vector<PanelKey> keys; // the display's terminal: absent when the display is
     std::vector<PowerOnValue> powerOn;
+    // The manual tells an error that stops the CPU from one it goes on after (Omron CPM1 guide
+    // 2.1: ERROR/ALARM lit or blinking, RUN dark "vagy hiba" only in the first case). Then an
+    // error the source reports while the program runs on (the simulator skips the instruction
+    // and goes on) is one of the second kind: ERROR/ALARM blinks and RUN stays lit; one it
+    // reports while the program does not run stopped it. False: any error the source reports
+    // is shown as one that stopped the PLC (RUN dark, the Fault lamp lit).
+    bool errorsGoOn = false;
     bool empty() const {
         return lamps.empty() && pointLamps.empty() && display.kind == DisplayKind::None &&
                knobs.empty();

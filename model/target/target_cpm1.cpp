@@ -20,6 +20,32 @@ InstructionSpec &withCode(InstructionSpec &s, const char *bare, int code) {
     return s;
 }
 
+// The CPU unit's peripheral port: the Omron CPM1 guide names it (2.1, item 9
+// "Perifériacsatlakozó") and uses it for "Monitorozás (PLC-PC on-line kapcsolat)" (3), and
+// gives nothing of its settings. Those are Omron's public Host Link documentation (the
+// CPM1/SRM1 programming manual W353, PC Setup of the peripheral port, DM 6650 / 6651): Host
+// Link at 1200, 2400, 4800, 9600 or 19200 bps, 7 or 8 data bits, even, odd or no parity, 1 or
+// 2 stop bits, unit number 00..31; the standard setting 9600 bps, 7 data bits, even parity, 2
+// stop bits, unit 0 (../shared/spec/protocols.md, "Omron CPM1 Host Link (C-mode)"). The
+// port answers a host from the PLC's memory through the Host Link map (target_cpm1_maps.cpp).
+std::vector<PortSpec> cpm1Ports() {
+    PortApplication hostLink;
+    hostLink.id = "host-link";
+    hostLink.name = QT_TRANSLATE_NOOP("rung::model::Target", "Host Link");
+    hostLink.bauds = {9600, 1200, 2400, 4800, 19200};
+    hostLink.frame = "7E2";
+    hostLink.stationMin = 0;
+    hostLink.stationMax = 31;
+    hostLink.station = 0;
+    hostLink.answers = ProtocolId::HostLink;
+    PortSpec peripheral;
+    peripheral.name = QStringLiteral("PERIPHERAL");
+    peripheral.description = QT_TRANSLATE_NOOP(
+        "rung::model::Target", "the CPU unit's peripheral port (Host Link, 9600 bps 7E2, unit 0)");
+    peripheral.applications = {hostLink};
+    return {peripheral};
+}
+
 } // namespace
 
 Target makeCpm1Target() {
@@ -274,13 +300,22 @@ Target makeCpm1Target() {
     strip(expanded, 18, 12);
     t.models.push_back(expanded);
     t.protocolMaps = cpm1ProtocolMaps();
+    t.ports = cpm1Ports();
     // The CPU unit's front (Omron CPM1 guide 2.1, "A CPU egységen található állapotjelző
     // LED-ek értelmezése"; 3.4 the analog settings: "0. Potenciométer: 250 -es csatorna").
-    // ERROR/ALARM: "Világít - Lényegi hiba, a CPU leállt" (the simulation's errors); "Villog -
-    // Nem lényegi hiba, a CPU tovább dolgozik": while a FAL(06) number is in 253.00..253.07.
-    // Neither the guide nor W353 gives the blink's rate: 0.5 s on, 0.5 s off is our choice.
-    // COMM: a simulated CPM1 has no port (no network port runs Host Link: docs/network.md), so
-    // it never communicates.
+    // ERROR/ALARM: "Világít - Lényegi hiba, a CPU leállt"; "Villog - Nem lényegi hiba, a CPU
+    // tovább dolgozik": while a FAL(06) number is in 253.00..253.07, and on an error the
+    // simulation reports while the program runs on (errorsGoOn: an instruction it skipped, ER
+    // 255.03, a result out of range; every error the simulated CPM1 reports is of this kind,
+    // none stops it). RUN: "Nem világít - PROGRAM üzemmód, vagy hiba": dark on an error that
+    // stopped the CPU. Neither the guide nor W353 gives the blink's rate: 0.5 s on, 0.5 s off
+    // is our choice.
+    // COMM: "Világít - A PLC kommunikál", "Nem világít - A PLC éppen nem kommunikál": lit while
+    // the peripheral port carries bytes (a network station's, docs/network.md). The guide gives
+    // no time; the lamp stays lit 0.2 s of simulated time after the last byte (our choice: long
+    // enough to be seen after one frame, short enough to go dark between a host's polls a
+    // second apart).
+    t.panel.errorsGoOn = true;
     t.panel.lamps = {
         {QStringLiteral("POWER"),
          LampColour::Green,
@@ -299,16 +334,20 @@ Target makeCpm1Target() {
          0,
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "lit on a fatal error: the CPU stopped; blinks on a non-fatal error "
-                           "(FAL 01..99 in 253.00..253.07): the CPU goes on"),
+                           "the CPU goes on after (FAL 01..99 in 253.00..253.07, an instruction "
+                           "skipped with ER 255.03)"),
          0x00ff, 500},
         {QStringLiteral("COMM"),
          LampColour::Orange,
-         LampSignal::Never,
+         LampSignal::Communication,
          {},
          0,
          QT_TRANSLATE_NOOP("rung::model::Target",
-                           "lit while the PLC communicates; a simulated CPM1 has no port, so "
-                           "it stays dark")},
+                           "lit while the PLC communicates: a byte sent or received on its "
+                           "peripheral port within the last 0.2 s"),
+         0xffff,
+         0,
+         200},
     };
     for (int pot = 0; pot < 2; ++pot)
         t.panel.knobs.push_back(

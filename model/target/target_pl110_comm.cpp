@@ -41,11 +41,11 @@ std::vector<PortSpec> pl110Ports() {
     slave.stationMin = 1;
     slave.stationMax = 255;
     slave.station = 1;
-    slave.answersModbus = true;
+    slave.answers = ProtocolId::Modbus;
     PortApplication master = slave;
     master.id = "modbus-master";
     master.name = QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS RTU master (COM / EXP)");
-    master.answersModbus = false;
+    master.answers.reset();
     master.master = true;
     // 4.2.21: "generalmente" RS-232 at 9600,8,O,1; the frames are not in the manual.
     PortApplication nais = master;

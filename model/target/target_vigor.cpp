@@ -81,7 +81,7 @@ std::vector<PortSpec> vigorPorts() {
     computerLink.frame = "7E1";
     computerLink.fixedFrame = true;
     computerLink.stationMax = 255;
-    computerLink.answersVigorLink = true;
+    computerLink.answers = ProtocolId::VigorLink;
 
     PortSpec cp1;
     cp1.name = QStringLiteral("CP1");
@@ -141,7 +141,7 @@ std::vector<PortSpec> vigorPorts() {
     modbus.stationMin = 0; // the master of MBUS (B-3-6: "station 0")
     modbus.stationMax = 247;
     modbus.station = 1;
-    modbus.answersModbus = true;
+    modbus.answers = ProtocolId::Modbus;
     PortApplication nonProtocol;
     nonProtocol.id = "non-protocol";
     nonProtocol.name = QT_TRANSLATE_NOOP("rung::model::Target", "Non Protocol");

@@ -352,6 +352,49 @@ TEST(CliNetwork, ServeBridgesAPortToAPseudoTerminal) {
     EXPECT_EQ(serve.exitCode(), 0) << serve.readAllStandardError().toStdString();
 }
 
+// A CPM1 station's peripheral port (Omron CPM1 guide 2.1, item 9, for "Monitorozás (PLC-PC
+// on-line kapcsolat)") bridged by `serve` to a pseudo-terminal, monitored by the product's own
+// Host Link master as the IDE's Connection dock drives it (`read` / `write`, Host Link at its
+// defaults 9600 7E2 unit 0): the program's DM 0000 and 010.00 are read; a write switches the
+// station to MONITOR (W353: writes are refused in RUN), and the program runs on.
+TEST(CliNetwork, TheHostLinkMasterMonitorsACpm1ThroughItsBridgedPeripheralPort) {
+    QTemporaryDir dir;
+    const QString file = network(
+        dir, {{QStringLiteral("c.il"),
+               QStringLiteral("; target: cpm1\nLD 253.13\nMOV(21) #1234 DM0000\nLD 000.00\n"
+                              "OUT NOT 010.00\nEND(01)\n")},
+              {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [{"name": "plc",
+                "program": "c.il", "model": "CPM1-20CDR", "ports": {"PERIPHERAL": {}}}],
+                "bridges": [{"port": "plc/PERIPHERAL", "pty": true}]})")}});
+    QProcess serve;
+    serve.start(QStringLiteral(RUNG_CLI_PATH), {QStringLiteral("serve"), file});
+    ASSERT_TRUE(serve.waitForStarted(10000));
+    const QDeadlineTimer started(20000);
+    while (!serve.canReadLine() && !started.hasExpired())
+        serve.waitForReadyRead(100);
+    const QString first = QString::fromUtf8(serve.readLine()).trimmed();
+    ASSERT_TRUE(first.startsWith(QStringLiteral("plc/PERIPHERAL /dev/pts/")))
+        << first.toStdString() << serve.readAllStandardError().toStdString();
+    const QString pty = first.section(QLatin1Char(' '), 1);
+    const auto online = [&](const char *command, QStringList devices) {
+        return cli(QStringList{QLatin1String(command), QStringLiteral("--target"),
+                               QStringLiteral("cpm1"), QStringLiteral("--protocol"),
+                               QStringLiteral("hostlink"), QStringLiteral("--pty"), pty} +
+                   devices);
+    };
+    const auto read = online("read", {QStringLiteral("DM 0000"), QStringLiteral("010.00")});
+    EXPECT_EQ(read.code, 0) << read.err.toStdString();
+    EXPECT_EQ(read.out, QStringLiteral("DM 0000=4660\n010.00=1\n")) << read.err.toStdString();
+    const auto write = online("write", {QStringLiteral("DM 0100=1234")});
+    EXPECT_EQ(write.code, 0) << write.err.toStdString();
+    EXPECT_TRUE(write.err.contains(QLatin1String("MONITOR"))) << write.err.toStdString();
+    const auto back = online("read", {QStringLiteral("DM 0100"), QStringLiteral("DM 0000")});
+    EXPECT_EQ(back.out, QStringLiteral("DM 0100=1234\nDM 0000=4660\n")) << back.err.toStdString();
+    serve.terminate(); // SIGTERM
+    ASSERT_TRUE(serve.waitForFinished(10000));
+    EXPECT_EQ(serve.exitCode(), 0) << serve.readAllStandardError().toStdString();
+}
+
 // mbpoll, a real Modbus master from Debian, as an HMI would poll the MODBUS application
 // example's slave (Vigor M/VB/VH communication manual, B-3-6) bridged to a pseudo-terminal:
 // it writes the slave's D100 (holding register 100, what the example's master writes) and

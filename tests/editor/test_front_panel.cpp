@@ -201,6 +201,31 @@ TEST(FrontPanelView, Cpm1ErrorAlarmBlinksWhileAFalNumberIsSet) {
     EXPECT_FALSE(alarm->isLit());
 }
 
+// Omron CPM1 guide 2.1, ERROR/ALARM: "Villog - Nem lényegi hiba, a CPU tovább dolgozik": a timer
+// whose set value in DM 0000 is not BCD (W353 TIM: "ER: SV is not in BCD") is skipped with ER
+// 255.03 ON and the program goes on, so the lamp blinks and RUN stays lit; the error is the
+// simulation's, reported by its source, not a FAL number.
+TEST(FrontPanelView, Cpm1ErrorAlarmBlinksOnAnInstructionErrorTheCpuGoesOnAfter) {
+    PanelFixture f;
+    f.start(rung::testing::cpm1(), QStringLiteral("CPM1-20CDR"),
+            "LD 253.13\nTIM 000 DM0000\nEND\n");
+    f.scan();
+    editor::PanelLamp *alarm = f.panel.lamp(QStringLiteral("ERROR/ALARM"));
+    ASSERT_NE(alarm, nullptr);
+    EXPECT_FALSE(alarm->isLit()) << "DM 0000 holds 0000, a BCD set value";
+    EXPECT_EQ(alarm->blinkMs(), 0);
+    f.session->writeWord(f.at("DM0000"), 0x00AB);
+    f.settle();
+    f.scan();
+    ASSERT_TRUE(eventually([&] { return !f.session->errorText().isEmpty(); }));
+    EXPECT_TRUE(f.session->errorText().contains(QStringLiteral("BCD")))
+        << f.session->errorText().toStdString();
+    EXPECT_TRUE(eventually([&] { return alarm->blinkMs() == 500; }));
+    EXPECT_TRUE(eventually([&] { return alarm->isLit(); }));
+    EXPECT_TRUE(eventually([&] { return !alarm->isLit(); }));
+    EXPECT_TRUE(f.panel.lamp(QStringLiteral("RUN"))->isLit()) << "the CPU goes on";
+}
+
 // VPC user's manual, II: "LEDs to show which inputs/outputs are driven ON (VPC2416 and higher)":
 // the panel has a lamp for each, lit with its point.
 TEST(FrontPanelView, VpcLedsFollowTheInputsAndOutputs) {

@@ -271,12 +271,14 @@ TEST(FrontPanel, Cpm1AnalogSettingsAreBcdAndItsLampsAreTheGuides) {
 
 // Omron CPM1 guide 2.1, ERROR/ALARM (piros): "Világít - Lényegi hiba, a CPU leállt", "Villog -
 // Nem lényegi hiba, a CPU tovább dolgozik", "Nem világít - Normál működés". A non-fatal error is
-// a FAL number in 253.00..253.07 (W353 FAL(06)); the guide gives no blink rate: 0.5 s.
+// a FAL number in 253.00..253.07 (W353 FAL(06)) or an error the source reports while the program
+// runs on (the simulator skips the instruction and goes on); one it reports while the program
+// does not run stopped the CPU. The guide gives no blink rate: 0.5 s.
 TEST(FrontPanel, Cpm1ErrorAlarmBlinksOnANonFatalErrorAndIsLitOnAFatalOne) {
     PanelImage image(rung::testing::cpm1());
     using R = MonitorSource::RunState;
-    const auto alarm = [&](qint64 ms, bool fault = false) {
-        return *lamp(image.view(R::Running, nullptr, ms, fault), "ERROR/ALARM");
+    const auto alarm = [&](qint64 ms, bool fault = false, R state = R::Running) {
+        return *lamp(image.view(state, nullptr, ms, fault), "ERROR/ALARM");
     };
     image.set("253", 0x2000); // 253.13, always ON: no error
     EXPECT_FALSE(alarm(0).lit);
@@ -288,15 +290,64 @@ TEST(FrontPanel, Cpm1ErrorAlarmBlinksOnANonFatalErrorAndIsLitOnAFatalOne) {
     EXPECT_FALSE(alarm(500).lit);
     EXPECT_TRUE(alarm(1000).lit);
     EXPECT_TRUE(lamp(image.view(R::Running, nullptr, 500), "RUN")->lit) << "the CPU goes on";
-    // A fatal error: lit, steady, whatever FAL number is there; RUN dark.
-    EXPECT_TRUE(alarm(500, true).lit);
-    EXPECT_EQ(alarm(500, true).blinkMs, 0);
+    // An error the source reports while the program runs on (paused: a PLC in RUN frozen in
+    // time): blinking, RUN lit, with or without a FAL number.
     image.set("253", 0);
-    EXPECT_TRUE(alarm(0, true).lit);
-    EXPECT_FALSE(lamp(image.view(R::Running, nullptr, 0, true), "RUN")->lit);
-    // Without power nothing is lit.
+    for (const R state : {R::Running, R::Paused, R::Stepping}) {
+        EXPECT_EQ(alarm(0, true, state).blinkMs, 500);
+        EXPECT_TRUE(alarm(0, true, state).lit);
+        EXPECT_FALSE(alarm(500, true, state).lit);
+        EXPECT_TRUE(lamp(image.view(state, nullptr, 500, true), "RUN")->lit) << "the CPU goes on";
+    }
+    // An error the source reports while the program does not run stopped the CPU: lit, steady,
+    // whatever FAL number is there; RUN dark.
+    EXPECT_TRUE(alarm(500, true, R::Stopped).lit);
+    EXPECT_EQ(alarm(500, true, R::Stopped).blinkMs, 0);
     image.set("253", 0x0012);
+    EXPECT_TRUE(alarm(500, true, R::Stopped).lit);
+    EXPECT_EQ(alarm(500, true, R::Stopped).blinkMs, 0);
+    EXPECT_FALSE(lamp(image.view(R::Stopped, nullptr, 0, true), "RUN")->lit);
+    image.set("253", 0);
+    EXPECT_FALSE(alarm(0, false, R::Stopped).lit) << "stopped without an error: dark";
+    // Without power nothing is lit.
     EXPECT_FALSE(lamp(image.view(R::Offline, nullptr, 0), "ERROR/ALARM")->lit);
+}
+
+// A family whose manual does not tell the two kinds apart (FrontPanel::errorsGoOn false, the
+// Vigor's ERROR "lit when a program error stopped the PLC"): any error the source reports is
+// shown as one that stopped it, RUN dark, whatever the run state.
+TEST(FrontPanel, WithoutErrorsThatGoOnAnyErrorDarkensRun) {
+    PanelImage image(rung::testing::vigor());
+    EXPECT_FALSE(rung::testing::vigor().panel.errorsGoOn);
+    EXPECT_TRUE(rung::testing::cpm1().panel.errorsGoOn);
+    const model::PanelView v = image.view(MonitorSource::RunState::Running, nullptr, 0, true);
+    EXPECT_FALSE(lamp(v, "RUN")->lit);
+    EXPECT_TRUE(lamp(v, "ERROR")->lit);
+    EXPECT_EQ(lamp(v, "ERROR")->blinkMs, 0);
+}
+
+// Omron CPM1 guide 2.1, COMM (narancssárga): "Világít - A PLC kommunikál", "Nem világít - A PLC
+// éppen nem kommunikál". Lit for 0.2 s of the PLC's clock after a byte on its port (the hold is
+// ours: the guide gives none); dark when nothing is known of its ports.
+TEST(FrontPanel, Cpm1CommIsLitWhileItsPortCarriedAByteWithinTheHold) {
+    PanelImage image(rung::testing::cpm1());
+    using R = MonitorSource::RunState;
+    const auto comm = [&](qint64 timeMs, qint64 communicatedUs, R state = R::Running) {
+        image.snapshot.statistics.timeMs = timeMs;
+        image.snapshot.communicatedUs = communicatedUs;
+        return *lamp(image.view(state), "COMM");
+    };
+    EXPECT_FALSE(comm(1000, -1).lit) << "no port, or no byte yet";
+    EXPECT_TRUE(comm(1000, 1000000).lit) << "a byte at the end of this scan";
+    EXPECT_TRUE(comm(1000, 1010000).lit) << "a reply still leaving after the scan";
+    EXPECT_TRUE(comm(1000, 800001).lit);
+    EXPECT_FALSE(comm(1000, 800000).lit) << "0.2 s after the last byte: dark";
+    EXPECT_FALSE(comm(5000, 1000000).lit);
+    EXPECT_EQ(comm(1000, 1000000).blinkMs, 0);
+    EXPECT_TRUE(comm(1000, 1000000, R::Paused).lit) << "frozen as the last scan left it";
+    EXPECT_FALSE(comm(1000, 1000000, R::Offline).lit) << "no power";
+    EXPECT_NE(QString::fromLatin1(lamp(image.view(), "COMM")->meaning).indexOf(u"peripheral"), -1);
+    EXPECT_EQ(QString::fromLatin1(lamp(image.view(), "COMM")->meaning).indexOf(u"no port"), -1);
 }
 
 // VPC user's manual, II Technical specifications, Indication: "LEDs to show which

@@ -1,3 +1,4 @@
+#include "model/comm/port_config.h"
 #include "model/listing/il.h"
 #include "model/target/address.h"
 #include "model/target/target.h"
@@ -701,4 +702,60 @@ TEST(Instructions, Pl110DocumentedListingParses) {
     EXPECT_EQ(r.list.instructions[15].spec->mnemonic, QStringLiteral("TON"));
     EXPECT_EQ(r.list.instructions[15].operands.size(), 3u);
     EXPECT_EQ(r.list.instructions[21].spec->mnemonic, QStringLiteral("MUP"));
+}
+
+// The CPM1's peripheral port (Omron CPM1 guide 2.1, item 9 "Perifériacsatlakozó", used for
+// "Monitorozás (PLC-PC on-line kapcsolat)") runs Host Link with the standard settings of
+// Omron's public Host Link documentation (W353, PC Setup of the peripheral port): 9600 bps, 7
+// data bits, even parity, 2 stop bits, unit 0; 1200..19200 bps, units 00..31.
+TEST(Ports, Cpm1PeripheralPortAnswersHostLinkAtTheStandardSettings) {
+    const Target &t = cpm1();
+    ASSERT_EQ(t.ports.size(), 1u);
+    const PortSpec *port = t.port(u"peripheral");
+    ASSERT_NE(port, nullptr);
+    EXPECT_EQ(port->name, QStringLiteral("PERIPHERAL"));
+    EXPECT_TRUE(port->models.isEmpty()) << "every CPU unit has it";
+    ASSERT_EQ(port->applications.size(), 1u);
+    const PortApplication &a = port->applications.front();
+    EXPECT_STREQ(a.id, "host-link");
+    EXPECT_EQ(a.answers, ProtocolId::HostLink);
+    EXPECT_NE(findProtocolMap(t, *a.answers), nullptr);
+    EXPECT_EQ(a.bauds, (std::vector<int>{9600, 1200, 2400, 4800, 19200}));
+    EXPECT_STREQ(a.frame, "7E2");
+    EXPECT_FALSE(a.fixedFrame);
+    EXPECT_EQ(a.stationMin, 0);
+    EXPECT_EQ(a.stationMax, 31);
+    EXPECT_EQ(a.station, 0);
+    EXPECT_FALSE(a.master);
+    EXPECT_TRUE(a.published);
+    // Host Link numbers its units from 0: unit 0 answers (MODBUS's 0 is the broadcast).
+    EXPECT_TRUE(answersAt(a, 0));
+    EXPECT_TRUE(answersAt(a, 31));
+    PortApplication modbus;
+    modbus.answers = ProtocolId::Modbus;
+    EXPECT_FALSE(answersAt(modbus, 0));
+    EXPECT_TRUE(answersAt(modbus, 1));
+    EXPECT_FALSE(answersAt(PortApplication{}, 1));
+    // A network file's or project's settings are read against the table: the defaults, and
+    // what is out of its ranges is refused with where and why.
+    PortConfig config;
+    QString error;
+    ASSERT_TRUE(readPortConfig(t, &t.defaultModel(), QStringLiteral("PERIPHERAL"),
+                               {{QJsonObject{}, QStringLiteral("stations[0].ports.PERIPHERAL")}},
+                               &config, &error))
+        << error.toStdString();
+    EXPECT_EQ(config.application, &a);
+    EXPECT_EQ(config.station, 0);
+    EXPECT_EQ(config.line.baud, 9600);
+    EXPECT_EQ(frameFormatText(config.line), QStringLiteral("7E2"));
+    EXPECT_FALSE(readPortConfig(t, &t.defaultModel(), QStringLiteral("PERIPHERAL"),
+                                {{QJsonObject{{QStringLiteral("station"), 32}},
+                                  QStringLiteral("stations[0].ports.PERIPHERAL")}},
+                                &config, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("stations[0].ports.PERIPHERAL.station")))
+        << error.toStdString();
+    EXPECT_FALSE(readPortConfig(t, &t.defaultModel(), QStringLiteral("PERIPHERAL"),
+                                {{QJsonObject{{QStringLiteral("baud"), 38400}},
+                                  QStringLiteral("stations[0].ports.PERIPHERAL")}},
+                                &config, &error));
 }

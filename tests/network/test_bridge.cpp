@@ -7,6 +7,7 @@
 
 #include "network/bridge.h"
 
+#include "comms/protocol/host_link_master.h"
 #include "comms/protocol/modbus_master.h"
 #include "comms/transport/pty_transport.h"
 #include "comms/transport/tcp_listen_transport.h"
@@ -35,6 +36,28 @@ comms::FrameStatus poll(RealTime &rt, comms::Transport &hmi, comms::modbus::Repl
             reply.feed(r.bytes);
     }
     return reply.status();
+}
+
+// A Host Link command through the pty, the network turned until its reply is whole (at most
+// 3 s), the parts of a long one asked for with a CR as the master does.
+comms::FrameStatus command(RealTime &rt, comms::Transport &host,
+                           comms::hostlink::ReplyDecoder &reply,
+                           const comms::hostlink::Frame &frame) {
+    QString error;
+    for (const QByteArray &part : comms::hostlink::encode(frame))
+        EXPECT_TRUE(host.write(part, QDeadlineTimer(1000), &error)) << error.toStdString();
+    const QDeadlineTimer deadline(3000);
+    comms::FrameStatus status = comms::FrameStatus::NeedMore;
+    while (status == comms::FrameStatus::NeedMore && !deadline.hasExpired()) {
+        QString failure;
+        EXPECT_TRUE(rt.turn(2, &failure)) << failure.toStdString();
+        const comms::ReadResult r = host.read(QDeadlineTimer(1));
+        if (r.status == comms::ReadResult::Status::Data)
+            status = reply.feed(r.bytes);
+        if (reply.takeDelimiterRequest())
+            EXPECT_TRUE(host.write("\r", QDeadlineTimer(1000), &error));
+    }
+    return status;
 }
 
 } // namespace
@@ -148,4 +171,68 @@ TEST(Bridge, ACpuLinkPortIsNeverPutOnARealLine) {
     RealTime rt(*r.net);
     EXPECT_FALSE(rt.addBridge(QStringLiteral("master/CP2"), std::move(pty), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("does not publish"))) << error.toStdString();
+}
+
+// The CPM1's peripheral port (Omron CPM1 guide 2.1, item 9 "Perifériacsatlakozó", for
+// "Monitorozás (PLC-PC on-line kapcsolat)") bridged to a pseudo-terminal, at its Host Link
+// defaults (9600 7E2, unit 0): a host reads DM 0000 with the product's own Host Link codec,
+// "@00RD0000000157*" (C-mode, Omron's public Host Link documentation), switches the PLC to
+// MONITOR and writes DM 0100 ("@00WD0100123456*"). (The COMM lamp's timing is tested on
+// virtual time alone: Cpm1PeripheralPort.*.)
+TEST(Bridge, AHostLinkMasterReadsACpm1ThroughItsPeripheralPortOnAPty) {
+    namespace hl = comms::hostlink;
+    NetRun r = runNetwork(
+        R"({"stations": [{"name": "plc", "program": "c.il",
+                              "model": "CPM1-20CDR", "ports": {"PERIPHERAL": {}}}]})",
+        {{QStringLiteral("c.il"), QStringLiteral("; target: cpm1\nLD 253.13\nMOV(21) #1234 DM0000\n"
+                                                 "END(01)\n")}});
+    ASSERT_TRUE(r.net) << r.error.toStdString();
+    Station *plc = r.net->station(QStringLiteral("plc"));
+    ASSERT_NE(plc, nullptr);
+    QString error;
+    auto pty = comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    comms::PtyTransport host(pty->peerPath());
+    ASSERT_TRUE(host.open(&error)) << error.toStdString();
+    RealTime rt(*r.net);
+    ASSERT_TRUE(rt.addBridge(QStringLiteral("plc/PERIPHERAL"), std::move(pty), &error))
+        << error.toStdString();
+    EXPECT_EQ(plc->snapshot().communicatedUs, -1) << "nothing on the port yet";
+
+    const hl::Frame read = hl::readCommand(0, model::ProtocolSpace::HostLinkDm, 0, 1);
+    EXPECT_EQ(hl::encode(read), QList<QByteArray>{"@00RD0000000157*\r"});
+    hl::ReplyDecoder reply(read);
+    ASSERT_EQ(command(rt, host, reply, read), comms::FrameStatus::Complete)
+        << reply.error().message.toStdString();
+    EXPECT_EQ(reply.reply().frame.endCode, 0);
+    EXPECT_EQ(reply.reply().words, (std::vector<std::uint16_t>{0x1234}));
+    EXPECT_GE(plc->snapshot().communicatedUs, 0);
+
+    // Writes are refused in RUN (end code 01): MONITOR first, as the IDE's master does.
+    const hl::Frame monitor = hl::modeCommand(0, hl::Mode::Monitor);
+    hl::ReplyDecoder switched(monitor);
+    ASSERT_EQ(command(rt, host, switched, monitor), comms::FrameStatus::Complete);
+    EXPECT_EQ(switched.reply().frame.endCode, 0);
+    const hl::Frame write = hl::writeCommand(0, model::ProtocolSpace::HostLinkDm, 100, {0x1234});
+    EXPECT_EQ(hl::encode(write), QList<QByteArray>{"@00WD0100123456*\r"});
+    hl::ReplyDecoder written(write);
+    ASSERT_EQ(command(rt, host, written, write), comms::FrameStatus::Complete);
+    EXPECT_EQ(written.reply().frame.endCode, 0);
+    EXPECT_EQ(value(*r.net, QStringLiteral("plc"), QStringLiteral("DM0100")), 0x1234);
+    const hl::Frame status = hl::statusCommand(0);
+    hl::ReplyDecoder monitoring(status);
+    ASSERT_EQ(command(rt, host, monitoring, status), comms::FrameStatus::Complete);
+    EXPECT_EQ(hl::modeOfStatus(monitoring.reply().status), hl::Mode::Monitor)
+        << "the program runs on in MONITOR";
+
+    // The frames are on the wire as the text they are, from the real line and from the port.
+    QByteArray fromHost, fromPlc;
+    for (const TrafficRecord &t : r.records) {
+        if (t.sender == QLatin1String("bridge:plc/PERIPHERAL"))
+            fromHost += t.bytes;
+        if (t.sender == QLatin1String("plc/PERIPHERAL"))
+            fromPlc += t.bytes;
+    }
+    EXPECT_TRUE(fromHost.startsWith("@00RD0000000157*\r")) << fromHost.toStdString();
+    EXPECT_TRUE(fromPlc.startsWith("@00RD001234")) << fromPlc.toStdString();
 }

@@ -230,6 +230,13 @@ TEST(TrafficDecode, EveryExampleNetworkDecodesWithoutAProblem) {
         NetRun run = runNetwork({}, {}, {}, file);
         ASSERT_TRUE(run.net) << run.error.toStdString();
         run.net->runUntil(3'000'000);
+        // The CPM1's peripheral port answers a host on its bridge's real line (cpm1-host-link):
+        // without one there is nothing on the wire.
+        if (file.contains(QStringLiteral("cpm1-host-link"))) {
+            EXPECT_TRUE(run.records.empty());
+            EXPECT_FALSE(run.net->description().bridges.empty());
+            continue;
+        }
         ASSERT_FALSE(run.records.empty());
         TrafficDecoder decoder(*run.net);
         int requests = 0;
