@@ -70,6 +70,8 @@ TimingChart::TimingChart(Document *document, QWidget *parent)
     m_followBox->setChecked(true);
     m_arm->setCheckable(true);
     m_triggerAction->addItems({QString(), QString()});
+    // Its width follows its texts: another language may be chosen while the window is open.
+    m_triggerAction->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_export->setPopupMode(QToolButton::InstantPopup);
     auto *exportMenu = new QMenu(m_export);
     for (const char *format : {"csv", "png", "svg"})

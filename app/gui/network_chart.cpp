@@ -41,6 +41,8 @@ NetworkChart::NetworkChart(QWidget *parent)
     m_triggerAction = new QComboBox(this);
     m_triggerAction->setObjectName(QStringLiteral("networkChartTriggerAction"));
     m_triggerAction->addItems({QString(), QString()}); // Stop, Mark (retranslate)
+    // Its width follows its texts: another language may be chosen while the window is open.
+    m_triggerAction->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_arm = new QPushButton(this);
     m_arm->setObjectName(QStringLiteral("networkChartArm"));
     m_arm->setCheckable(true);

@@ -286,6 +286,25 @@ TEST(NetworkDebug, PausedAtABreakpointFitsTheScreenInEveryLanguage) {
 // others at their scan boundary), shown as a breakpoint's stop is (the station selected, the
 // status bar and the held mark naming the condition), cursor A on that moment; Stop When...
 // shows in the chart's field; "Only mark" lets the network run on and marks the moment.
+// The trigger's action box grows with its text in the language chosen while the window is open
+// ("Stop the network" -> "A hálózat megállítása"), not clipped at the width of the first one.
+TEST(NetworkDebug, TheTriggerActionFitsItsTextAfterALanguageChange) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(kCpuLink, QString(), true));
+    app::NetworkWindow *net = debuggedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    QComboBox *box = net->chart()->triggerAction();
+    const int first = box->sizeHint().width();
+    ASSERT_TRUE(app::setLanguage(QStringLiteral("hu"), false));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+    QCoreApplication::processEvents();
+    const QString text = box->itemText(0);
+    EXPECT_NE(text, QStringLiteral("Stop the network"));
+    EXPECT_GT(box->sizeHint().width(), first) << text.toStdString();
+    app::setLanguage(QStringLiteral("en"), false);
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+}
+
 TEST(NetworkDebug, TheTimingChartsTriggerStopsTheWholeNetworkAndSaysWhichStationAndCondition) {
     app::MainWindow window;
     ASSERT_TRUE(window.openFile(kCpuLink, QString(), true));
