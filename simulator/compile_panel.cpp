@@ -36,6 +36,8 @@ void Compiler::compilePanel() {
     t.startPage = word(d.startPageDevice);
     t.pageShown = word(d.pageShownDevice);
     t.pageRequest = word(d.pageRequestDevice);
+    t.lastArea = word(d.lastAreaDevice);
+    t.lastNumber = word(d.lastNumberDevice);
     t.systemCount = d.systemPages;
     t.firstUser = d.firstUserPage;
     t.userCount = d.userPages;

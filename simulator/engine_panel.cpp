@@ -45,6 +45,12 @@ void Engine::serviceTerminal() {
         shown = next(shown);
     m_swapHeld = swap;
     R[t.pageShown] = shown;
+    // SM107 / SM108: "per il solo ciclo di scansione successivo alla modifica ... Nel ciclo
+    // successivo le due aree verranno automaticamente poste a 0" (2.1.2). The keys store
+    // between scans; the scan after reads the note, and here it goes.
+    for (const std::int32_t w : {t.lastArea, t.lastNumber})
+        if (w >= 0)
+            R[w] = 0;
 }
 
 } // namespace rung::simulator

@@ -502,6 +502,9 @@ struct Program {
     struct TerminalPages {
         std::int32_t systemPages = -1, userPages = -1, startPage = -1, pageShown = -1,
                      pageRequest = -1;
+        // The note of the last variable stored from the keys (SM107, SM108): cleared at the
+        // end of every scan, so a program sees it in the one scan after the store.
+        std::int32_t lastArea = -1, lastNumber = -1;
         BitRef swap;
         int systemCount = 0, firstUser = 0, userCount = 0;
     } terminal;

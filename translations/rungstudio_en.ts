@@ -149,7 +149,7 @@
 <context>
     <name>rung::editor::TimingChart</name>
     <message numerus="yes">
-        <location filename="../editor/timing_chart.cpp" line="+415"/>
+        <location filename="../editor/timing_chart.cpp" line="+417"/>
         <source>B − A: %1 (%n scan(s))</source>
         <extracomment>the time between the cursors, and how many scans that is</extracomment>
         <translation>

@@ -2376,7 +2376,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+104"/>
+        <location filename="../app/gui/network_chart.cpp" line="+106"/>
         <source>Follow</source>
         <translation>Követés</translation>
     </message>
@@ -3574,13 +3574,13 @@ Menti mégis, ezek nélkül?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+257"/>
-        <location line="+220"/>
+        <location filename="../app/gui/network_window.cpp" line="+263"/>
+        <location line="+222"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-219"/>
         <source>&amp;Network</source>
         <translation>&amp;Hálózat</translation>
     </message>
@@ -3707,7 +3707,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>Állomás:</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>F&amp;aults</source>
         <translation>H&amp;ibák</translation>
     </message>
@@ -6995,7 +6995,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::TimingChart</name>
     <message>
-        <location filename="../editor/timing_chart.cpp" line="+179"/>
+        <location filename="../editor/timing_chart.cpp" line="+181"/>
         <source>Devices and ranges to draw, with commas; they can also be dragged here from the ladder or the watch table</source>
         <translation>Kirajzolandó operandusok és tartományok, vesszővel elválasztva; a létradiagramról vagy a figyelőtáblából ide is húzhatók</translation>
     </message>
@@ -9431,7 +9431,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+93"/>
+        <location filename="../model/target/target_pl110.cpp" line="+87"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -9782,7 +9782,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-407"/>
+        <location filename="../model/target/target_pl110.cpp" line="-401"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -10094,7 +10094,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a COM2 csak MODBUS slave-ként működik: állapotát, válaszkésleltetését, felügyeleti idejét és számlálóit a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+26"/>
         <source>NOT contact: invert the power flow</source>
         <translation>NOT érintkező: az áramút negálása</translation>
     </message>
@@ -11084,12 +11084,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>csökkenti a módosítás alatt álló mezőt</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-195"/>
-        <source>the terminal&apos;s note of the last variable changed from the keys is not modelled; the word stays as the program leaves it</source>
-        <translation>a terminál feljegyzése a billentyűkkel utoljára módosított változóról nincs modellezve; a szó úgy marad, ahogy a program hagyja</translation>
-    </message>
-    <message>
-        <location line="+170"/>
+        <location filename="../model/target/target_pl110.cpp" line="-25"/>
         <source>characters per word</source>
         <translation>karakter szavanként</translation>
     </message>

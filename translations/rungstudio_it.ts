@@ -2383,7 +2383,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+104"/>
+        <location filename="../app/gui/network_chart.cpp" line="+106"/>
         <source>Follow</source>
         <translation>Segui</translation>
     </message>
@@ -3582,13 +3582,13 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+257"/>
-        <location line="+220"/>
+        <location filename="../app/gui/network_window.cpp" line="+263"/>
+        <location line="+222"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-219"/>
         <source>&amp;Network</source>
         <translation>&amp;Rete</translation>
     </message>
@@ -3715,7 +3715,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Stazione:</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>F&amp;aults</source>
         <translation>&amp;Guasti</translation>
     </message>
@@ -7010,7 +7010,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::TimingChart</name>
     <message>
-        <location filename="../editor/timing_chart.cpp" line="+179"/>
+        <location filename="../editor/timing_chart.cpp" line="+181"/>
         <source>Devices and ranges to draw, with commas; they can also be dragged here from the ladder or the watch table</source>
         <translation>Operandi e intervalli da tracciare, separati da virgole; si possono anche trascinare qui dal ladder o dalla tabella di osservazione</translation>
     </message>
@@ -9454,7 +9454,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+93"/>
+        <location filename="../model/target/target_pl110.cpp" line="+87"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -9805,7 +9805,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-407"/>
+        <location filename="../model/target/target_pl110.cpp" line="-401"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -10117,7 +10117,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>COM2 funziona solo da slave MODBUS: il suo stato, il ritardo di risposta, il tempo di controllo e i contatori non sono modellati; la word è semplice memoria</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+26"/>
         <source>NOT contact: invert the power flow</source>
         <translation>Contatto NOT: inverte il flusso di corrente</translation>
     </message>
@@ -11107,12 +11107,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>decrementa il campo in modifica</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-195"/>
-        <source>the terminal&apos;s note of the last variable changed from the keys is not modelled; the word stays as the program leaves it</source>
-        <translation>l&apos;indicazione dell&apos;ultima variabile modificata tramite il terminale non è modellata; la word resta come la lascia il programma</translation>
-    </message>
-    <message>
-        <location line="+170"/>
+        <location filename="../model/target/target_pl110.cpp" line="-25"/>
         <source>characters per word</source>
         <translation>caratteri per word</translation>
     </message>

@@ -107,7 +107,9 @@ std::optional<TerminalField> terminalField(const Target &target, const Snapshot 
     // 2.1.2, from SM118: state, area, number (high, low), minimum's area and number, maximum's
     // area and number, format, total digits, decimals, fill, row, column, access.
     f.state = static_cast<int>(at(0));
-    f.variable = listedVariable(target, static_cast<int>(at(1)), number(2));
+    f.area = static_cast<int>(at(1));
+    f.number = number(2);
+    f.variable = listedVariable(target, f.area, f.number);
     f.format = static_cast<int>(at(10));
     f.digits = static_cast<int>(std::clamp<qint64>(at(11), 1, 12));
     f.decimals = static_cast<int>(std::clamp<qint64>(at(12), 0, 10));
@@ -170,8 +172,14 @@ std::vector<TerminalWrite> terminalKey(const Target &target, const Snapshot &sna
         const std::vector<int> fields = editableFields(target, snapshot);
         if (s.mode == Mode::Field) {
             const auto f = terminalField(target, snapshot, s.field);
-            if (f && f->variable)
+            if (f && f->variable) {
                 writes.push_back({*f->variable, std::clamp(s.value, f->lowest, f->highest)});
+                // The note for the program's next scan (the engine clears it after that scan).
+                if (const auto a = terminalDevice(target, d.lastAreaDevice))
+                    writes.push_back({*a, f->area});
+                if (const auto n = terminalDevice(target, d.lastNumberDevice))
+                    writes.push_back({*n, f->number});
+            }
             const auto next = std::upper_bound(fields.begin(), fields.end(), s.field);
             if (next == fields.end())
                 endEditing(s);

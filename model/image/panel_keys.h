@@ -64,6 +64,8 @@ bool terminalPassesKey(const TerminalState &state, PanelKeyRole role);
 struct TerminalField {
     int state = 0; // 0 disabled, 1 shown, 2 editable ("Modifica")
     std::optional<Address> variable;
+    int area = 0;      // the variable's area as SM107's list codes it
+    qint64 number = 0; // and its number
     qint64 lowest = 0;
     qint64 highest = 0;
     int format = 0; // 0 16 bit signed, 1 16 bit unsigned, 2 32 bit signed

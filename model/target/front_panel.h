@@ -133,6 +133,10 @@ struct PanelDisplay {
     // holds `userPassword`. 0 / empty: the terminal edits nothing.
     int passwordPage = 0;
     QString passwordDevice;
+    // The note of the last variable stored from the keys, for the scan after the store only:
+    // its area's code (areaCodes) and its number (PL110 manual 2.1.2 SM107, SM108).
+    QString lastAreaDevice;
+    QString lastNumberDevice;
     int passwordDigits = 0;
     int userPassword = 0;
     int passwordHoldMs = 0;

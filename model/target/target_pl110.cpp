@@ -243,12 +243,6 @@ Target makePl110Target() {
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "COM2 runs the MODBUS slave only: its status, reply delay, supervision "
                            "time and counters are not modelled; the word is plain memory")},
-        // The standby (SM100, SM101) and the password (SM109) are the front panel's
-        // (model/image/panel_keys.h); which variable the keys changed last is not told.
-        {QStringLiteral("SM107"), QStringLiteral("SM108"),
-         QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the terminal's note of the last variable changed from the keys is "
-                           "not modelled; the word stays as the program leaves it")},
     };
 
     // Contacts. The plain spellings come first: Target::findInstruction(op, mode) returns the

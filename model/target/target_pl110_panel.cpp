@@ -102,6 +102,11 @@ void addPl110Panel(Target &t) {
     // necessario immettere la password utente 1234"; SM100 / SM101 the standby.
     d.passwordPage = 253;
     d.passwordDevice = QStringLiteral("SM109");
+    // 2.1.2 SM107 / SM108: "se tramite il terminale si modifica la variabile VW30, si avrà, per
+    // il solo ciclo di scansione successivo alla modifica, SM107 = 1 e SM108 = 30. Nel ciclo
+    // successivo le due aree verranno automaticamente poste a 0."
+    d.lastAreaDevice = QStringLiteral("SM107");
+    d.lastNumberDevice = QStringLiteral("SM108");
     d.passwordDigits = 4;
     d.userPassword = 1234;
     d.passwordHoldMs = 2000;

@@ -490,8 +490,12 @@ TEST(FrontPanelKeys, Pl110SetEditsAFieldUpDownChangeItSetStoresIt) {
     EXPECT_FALSE(model::terminalPassesKey(t.state, Role::Swap));
     EXPECT_TRUE(model::terminalPassesKey(t.state, Role::Up));
     const auto writes = t.press(Role::Set);
-    ASSERT_EQ(writes.size(), 1u);
+    // 2.1.2 SM107 / SM108: "se tramite il terminale si modifica la variabile VW30, si avrà ...
+    // SM107 = 1 e SM108 = 30": the note of the variable stored, V (area 1) number 0.
+    ASSERT_EQ(writes.size(), 3u);
     EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("V0"), 1400}));
+    EXPECT_EQ(writes[1], (model::TerminalWrite{t.at("SM107"), 1}));
+    EXPECT_EQ(writes[2], (model::TerminalWrite{t.at("SM108"), 0}));
     EXPECT_EQ(t.state.mode, Mode::Pages); // the page's only field: back to the page
     EXPECT_TRUE(model::terminalPassesKey(t.state, Role::Swap));
 }
@@ -511,14 +515,16 @@ TEST(FrontPanelKeys, Pl110SetGoesFromFieldToFieldStoringEach) {
     EXPECT_EQ(t.state.field, 0);
     t.press(Role::Down); // 0 is Min: stays
     auto writes = t.press(Role::Set);
-    ASSERT_EQ(writes.size(), 1u);
+    ASSERT_EQ(writes.size(), 3u);
     EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("V0"), 0}));
     EXPECT_EQ(t.state.field, 2);
     EXPECT_EQ(t.state.value, 300);
     t.press(Role::Down);
     writes = t.press(Role::Set);
-    ASSERT_EQ(writes.size(), 1u);
+    ASSERT_EQ(writes.size(), 3u);
     EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("V2"), 299}));
+    EXPECT_EQ(writes[1], (model::TerminalWrite{t.at("SM107"), 1}));
+    EXPECT_EQ(writes[2], (model::TerminalWrite{t.at("SM108"), 2}));
     EXPECT_EQ(t.state.mode, Mode::Pages);
 }
 

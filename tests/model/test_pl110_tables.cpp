@@ -176,8 +176,9 @@ TEST(Pl110Sm013, ACounterBesideAWriteOfSm013IsAWarning) {
 // Issue 14, PL110 manual 2.1.2; issue 30: the display's pages (SM102..SM106), the terminal's
 // keys (SM110) and the user pages' fields (SM118..SM185) are simulated now (the front panel
 // shows them), and so are the standby (SM100, SM101) and the password (SM109), which the front
-// panel's keys model; what is still plain memory -- the last variable changed from the keys
-// (SM107, SM108) -- is named at each use (SIM101), and nothing of the rest of SM.
+// panel's keys model, and the note of the last variable stored from the keys (SM107, SM108);
+// what is still plain memory -- here the protocol's line setting SM71 -- is named at each use
+// (SIM101), and nothing of the rest of SM.
 TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
     const char *program = "LD SM0.1\n"      // 1 first scan: no warning
                           "SBIT SM103.0\n"  // 2 user page 17 enabled (5.4): simulated
@@ -192,7 +193,7 @@ TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
                           "LD SM0.0\n"      // 11
                           "MOV SM111 V1\n"  // 12 not in the manual's table
                           "LD SM0.1\n"      // 13
-                          "MOV SM108 V2\n"  // 14 the last variable changed
+                          "MOV SM71 V2\n"   // 14 the line setting: plain memory
                           "LD SM0.1\n"      // 15
                           "MOV 50 SM100\n"  // 16 the standby brightness: the front panel's
                           "LD SM0.0\n"      // 17
@@ -207,8 +208,8 @@ TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
         }
     ASSERT_EQ(warned.size(), 1u);
     EXPECT_EQ(warned[0].first, 14);
-    EXPECT_TRUE(warned[0].second.startsWith(QLatin1String("SM108 is not simulated: the "
-                                                          "terminal's note")))
+    EXPECT_TRUE(warned[0].second.startsWith(QLatin1String("SM71 is not simulated: the "
+                                                          "protocol's baud rate")))
         << warned[0].second.toStdString();
     EXPECT_EQ(count(found, "SIM100"), 0);
     // With the source at hand the column is the device's, for the editor's marker.
@@ -217,11 +218,11 @@ TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
     options.source = &text;
     const std::vector<Diagnostic> placed =
         checkList(parseInstructionList(pl110(), text).list, options);
-    const auto sm108 = std::find_if(placed.begin(), placed.end(), [](const Diagnostic &d) {
+    const auto sm71 = std::find_if(placed.begin(), placed.end(), [](const Diagnostic &d) {
         return d.code == QLatin1String("SIM101") && d.location.line == 14;
     });
-    ASSERT_NE(sm108, placed.end());
-    EXPECT_EQ(sm108->location.column, 5);
+    ASSERT_NE(sm71, placed.end());
+    EXPECT_EQ(sm71->location.column, 5);
 }
 
 // Issue 14, PL110 manual 2.1.2: every special-marker word behind hardware the simulator does not

@@ -482,13 +482,13 @@ TEST(Pl110Contacts, IfComparesWithASignedHashConstant) {
 // Issue 14: what `check` warns as not simulated (SIM101, PL110 manual 2.1.2) the simulator says
 // again when it starts, with the same words.
 TEST(Pl110Unmodelled, TheSimulatorWarnsAsCheckDoes) {
-    Pl110 s("LD SM0.0\nMOV 50 SM107\nLD SM0.0\nMOV SM108 V0\nLD SM110.3\nOUT Q1\nEND");
+    Pl110 s("LD SM0.0\nMOV 50 SM4\nLD SM0.0\nMOV SM71 V0\nLD SM110.3\nOUT Q1\nEND");
     ASSERT_TRUE(s.result.ok());
     std::vector<model::Diagnostic> fromCheck;
     for (const model::Diagnostic &d : model::checkList(s.parsed.list, {}))
         if (d.code == QLatin1String("SIM101"))
             fromCheck.push_back(d);
-    ASSERT_EQ(fromCheck.size(), 2u); // SM107 and SM108; the SET key SM110.3 is simulated
+    ASSERT_EQ(fromCheck.size(), 2u); // SM4 and SM71; the SET key SM110.3 is simulated
     ASSERT_EQ(s.result.diagnostics.size(), 2u);
     for (std::size_t k = 0; k < 2; ++k) {
         EXPECT_EQ(s.result.diagnostics[k].code, QLatin1String("SIM101"));
@@ -544,6 +544,28 @@ TEST(Pl110Terminal, APageRequestIsShownAndResetAnUnknownOneIsKept) {
     s.engine->scan();
     EXPECT_EQ(s.value("SM105"), 17);
     EXPECT_EQ(s.value("SM106"), 20);
+}
+
+// SM107 / SM108 (2.1.2): "se tramite il terminale si modifica la variabile VW30, si avrà, per il
+// solo ciclo di scansione successivo alla modifica, SM107 = 1 e SM108 = 30. Nel ciclo successivo
+// le due aree verranno automaticamente poste a 0." The keys store between scans (the front
+// panel writes the variable and the note); the program reads the note in the scan after.
+TEST(Pl110Terminal, TheNoteOfTheLastVariableStoredLastsOneScan) {
+    Pl110 s("LD SM0.0\nMOV SM107 V0\nLD SM0.0\nMOV SM108 V2\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->scan();
+    s.engine->writeWord(s.at("VW30"), 7);
+    s.engine->writeWord(s.at("SM107"), 1);
+    s.engine->writeWord(s.at("SM108"), 30);
+    s.engine->scan();
+    EXPECT_EQ(s.value("V0"), 1); // the program saw the note
+    EXPECT_EQ(s.value("V2"), 30);
+    EXPECT_EQ(s.value("SM107"), 0); // and it is gone after that scan
+    EXPECT_EQ(s.value("SM108"), 0);
+    s.engine->scan();
+    EXPECT_EQ(s.value("V0"), 0);
+    EXPECT_EQ(s.value("V2"), 0);
+    EXPECT_EQ(s.value("VW30"), 7); // the variable itself stays
 }
 
 // 5.2: "Il tasto swap permette di scorrere in modo circolare tutte le pagine rese disponibili
