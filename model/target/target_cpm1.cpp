@@ -26,7 +26,7 @@ InstructionSpec &withCode(InstructionSpec &s, const char *bare, int code) {
 // CPM1/SRM1 programming manual W353, PC Setup of the peripheral port, DM 6650 / 6651): Host
 // Link at 1200, 2400, 4800, 9600 or 19200 bps, 7 or 8 data bits, even, odd or no parity, 1 or
 // 2 stop bits, unit number 00..31; the standard setting 9600 bps, 7 data bits, even parity, 2
-// stop bits, unit 0 (../shared/spec/protocols.md, "Omron CPM1 Host Link (C-mode)"). The
+// stop bits, unit 0 (Omron's Host Link C-mode: docs/comms.md). The
 // port answers a host from the PLC's memory through the Host Link map (target_cpm1_maps.cpp).
 std::vector<PortSpec> cpm1Ports() {
     PortApplication hostLink;
