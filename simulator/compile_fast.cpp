@@ -102,6 +102,7 @@ std::optional<FastElement> constantElement(const Program &program, const Step &s
     e.setWord = s.y.index >= 0 ? s.y.index : s.dest;
     e.bitWord = s.bit.word;
     e.bitMask = s.bit.mask;
+    e.bitKeep = ~s.bit.mask;
     e.set = std::max<std::int32_t>(0, s.x.constant);
     if (s.code == Code::Counter)
         return (s.flags & kOneInput) && s.width == 16 ? std::optional(e) : std::nullopt;
@@ -176,6 +177,45 @@ void fuse(std::vector<FastStep> &fast) {
     }
 }
 
+// Program::guarded: whether the fast loop reads the gate at every contact and tests the
+// stacks' bounds. Without a jump or a subroutine, each rung starts with both stacks empty
+// (its LD empties them) and runs in order, so at most its own LDs and MPSs are on them.
+bool guardedSteps(const std::vector<Step> &steps) {
+    int loads = 0;
+    int pushes = 0;
+    for (const Step &s : steps) {
+        switch (s.code) {
+        case Code::StepLadder: // the gate
+        case Code::Return:
+        case Code::StepDefine:
+        case Code::Interlock:
+        case Code::InterlockClear:
+        case Code::Jump: // the order of the steps
+        case Code::SubroutineCall:
+        case Code::SubroutineStart:
+        case Code::SubroutineReturn:
+            return true;
+        case Code::Load:
+        case Code::LoadEdge:
+        case Code::LoadCompare:
+            if (s.flags & kRungStart) {
+                loads = 0;
+                pushes = 0;
+            } else if (++loads >= model::kMaxOpenBlocks) {
+                return true;
+            }
+            break;
+        case Code::Push:
+            if (++pushes >= model::kMaxStackDepthOfAnyTarget)
+                return true;
+            break;
+        default:
+            break;
+        }
+    }
+    return false;
+}
+
 } // namespace
 
 void buildFastSteps(Program &program) {
@@ -184,25 +224,16 @@ void buildFastSteps(Program &program) {
     program.fastElements.clear();
     const bool lean = program.gates.empty(); // no timer or counter is gated
     const bool flags = program.flags.any();
-    program.gatedSteps = false;
+    program.guarded = guardedSteps(program.steps);
     for (std::size_t i = 0; i < program.steps.size(); ++i) {
         const Step &s = program.steps[i];
-        switch (s.code) {
-        case Code::StepLadder:
-        case Code::Return:
-        case Code::StepDefine:
-        case Code::Interlock:
-        case Code::InterlockClear:
-            program.gatedSteps = true;
-            break;
-        default:
-            break;
-        }
         FastStep f;
         f.op = fastOf(s);
         f.word = s.bit.word;
         f.mask = s.bit.mask;
         f.flip = (s.flags & kNegated) ? s.bit.mask : 0;
+        if (f.op == FastOp::Out || f.op == FastOp::OutNot || f.op == FastOp::Set)
+            f.flip = ~s.bit.mask;
         const bool word16 = s.width == 16 && !flags && s.dest >= 0 && s.x.index >= 0;
         auto operands = [&](FastOp wordConst, FastOp wordWord) {
             f.op = s.y.index >= 0 ? wordWord : wordConst;

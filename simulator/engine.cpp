@@ -106,7 +106,7 @@ void Engine::scan() {
                                                     &Engine::runFast<true, true, false, true>},
                                                    {&Engine::runFast<true, true, true, false>,
                                                     &Engine::runFast<true, true, true, true>}}}};
-        (this->*runs[m_record][forced][deferred][m_program->gatedSteps])();
+        (this->*runs[m_record][forced][deferred][m_program->guarded])();
     } else {
         const bool special = m_program->specialSteps;
         if (m_record)

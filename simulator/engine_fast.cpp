@@ -31,7 +31,7 @@ inline bool edgeOf(std::uint8_t &prev, bool now, bool falling) {
 #pragma GCC diagnostic ignored "-Wpedantic"
 #endif
 
-template <bool Record, bool Forced, bool Deferred, bool Gated> std::size_t Engine::runFast() {
+template <bool Record, bool Forced, bool Deferred, bool Guarded> std::size_t Engine::runFast() {
     const Program &p = *m_program;
     const FastStep *fast = p.fast.data();
     const Step *steps = p.steps.data();
@@ -52,8 +52,8 @@ template <bool Record, bool Forced, bool Deferred, bool Gated> std::size_t Engin
     bool acc = false;
     bool gate = true;
     // A program without STL, STEP(08), MC / IL: no step ever turns the gate OFF, so the loop
-    // made for it (Gated false) does not read it at every contact.
-#define RUNG_GATE (Gated ? gate : true)
+    // made for it (Guarded false) does not read it at every contact.
+#define RUNG_GATE (Guarded ? gate : true)
     bool interlock = true;
     bool stepActive = true;
     m_regs.depth = 0;
@@ -69,7 +69,7 @@ template <bool Record, bool Forced, bool Deferred, bool Gated> std::size_t Engin
         if constexpr (Forced)
             if (forced[f.word] & f.mask)
                 return;
-        writeBit(W[f.word], f.mask, on);
+        writeBit(W[f.word], f.mask, f.flip, on); // a coil's flip: ~mask
     };
     // put() and storeWord() without the look at the forces when nothing is forced.
     auto putBit = [&](const BitRef &b, bool on) {
@@ -77,6 +77,13 @@ template <bool Record, bool Forced, bool Deferred, bool Gated> std::size_t Engin
             if (forced[b.word] & b.mask)
                 return;
         writeBit(W[b.word], b.mask, on);
+    };
+    // A timer's or counter's done bit (FastElement::bitKeep).
+    auto putKept = [&](const FastElement &e, bool on) {
+        if constexpr (Forced)
+            if (forced[e.bitWord] & e.bitMask)
+                return;
+        writeBit(W[e.bitWord], e.bitMask, e.bitKeep, on);
     };
     auto storeAt = [&](std::int32_t index, std::int64_t value, int width) {
         if constexpr (Forced)
@@ -119,7 +126,7 @@ template <bool Record, bool Forced, bool Deferred, bool Gated> std::size_t Engin
         if (start) {
             bsp = 0;
             psp = 0;
-        } else if (bsp < kBlockStack) {
+        } else if (!Guarded || bsp < kBlockStack) { // Program::guarded: bounded
             blocks[bsp++] = acc;
         }
         acc = v & RUNG_GATE;
@@ -252,7 +259,7 @@ opOrBlock:
         acc = blocks[--bsp] | acc;
     RUNG_NEXT();
 opPush:
-    if (psp < kPushStack)
+    if (!Guarded || psp < kPushStack)
         pushed[psp++] = acc;
     RUNG_NEXT();
 opReadStack:
@@ -409,8 +416,11 @@ opSeriesAnd2:
     RUNG_NEXT();
 opParallelAnd : {
     // The block stack's bound, as LD and ANB keep it (the compiler never comes near it).
-    if (bsp >= kBlockStack) [[unlikely]]
-        goto *table[static_cast<std::size_t>(f->flip ? FastOp::LoadNot : FastOp::Load)];
+    if (Guarded && bsp >= kBlockStack) [[unlikely]] {
+        if (f->flip)
+            goto opLoadNot;
+        goto opLoad;
+    }
     const bool a = contact(f[0]) & RUNG_GATE;
     const bool branch = a | (contact(f[1]) & RUNG_GATE);
     if constexpr (Record) {
@@ -422,8 +432,11 @@ opParallelAnd : {
     RUNG_NEXT();
 }
 opSeriesOr : {
-    if (bsp >= kBlockStack) [[unlikely]]
-        goto *table[static_cast<std::size_t>(f->flip ? FastOp::LoadNot : FastOp::Load)];
+    if (Guarded && bsp >= kBlockStack) [[unlikely]] {
+        if (f->flip)
+            goto opLoadNot;
+        goto opLoad;
+    }
     const bool a = contact(f[0]) & RUNG_GATE;
     const bool series = a & contact(f[1]);
     if constexpr (Record) {
@@ -437,8 +450,8 @@ opSeriesOr : {
 // The coil's value; MPP gives acc back as it was.
 #define RUNG_BRANCH_OUT(negated)                                                                   \
     do {                                                                                           \
-        if (psp >= kPushStack) [[unlikely]]                                                        \
-            goto *table[static_cast<std::size_t>(FastOp::Push)];                                   \
+        if (Guarded && psp >= kPushStack) [[unlikely]]                                             \
+            goto opPush;                                                                           \
         const bool on = acc & contact(f[1]);                                                       \
         if constexpr (Record) {                                                                    \
             flow[at()] = acc;                                                                      \
@@ -532,7 +545,7 @@ opTimerK : {
     if (!acc) {
         st.running = 0;
         st.accumulated = 0;
-        putBit(BitRef{e.bitWord, e.bitMask}, false);
+        putKept(e, false);
         R[e.dest] = 0;
         RUNG_NEXT();
     }
@@ -540,7 +553,7 @@ opTimerK : {
         st.running ? std::min<std::int64_t>(st.accumulated + period, e.limitMs) : st.accumulated;
     st.running = 1;
     st.accumulated = ms;
-    putBit(BitRef{e.bitWord, e.bitMask}, ms >= e.limitMs);
+    putKept(e, ms >= e.limitMs);
     std::int64_t units = static_cast<std::int64_t>(
         (static_cast<std::uint64_t>(std::min(ms, e.limitMs)) * e.magic) >> kFastDivShift);
     if (ms > e.limitMs) [[unlikely]] // kept from before an online edit lowered the set value
@@ -555,7 +568,7 @@ opCounterK : {
     if (acc && !st.previous && st.accumulated < e.set)
         ++st.accumulated;
     st.previous = acc;
-    putBit(BitRef{e.bitWord, e.bitMask}, st.accumulated >= e.set);
+    putKept(e, st.accumulated >= e.set);
     R[e.dest] = static_cast<std::int16_t>(static_cast<std::uint16_t>(st.accumulated));
     RUNG_NEXT();
 }

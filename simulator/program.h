@@ -319,8 +319,8 @@ struct FastStep {
     // Program::steps. TimerK / CounterK: the element's index in Program::fastElements.
     std::int32_t word = -1;
     std::uint32_t mask = 0;
-    // Negated contacts and coils: the mask, so that ((word ^ flip) & mask) is the contact's
-    // value; 0 otherwise.
+    // Negated contacts: the mask, so that ((word ^ flip) & mask) is the contact's value;
+    // other contacts 0. Coils (OUT, OUTN, SET): ~mask, what a write keeps of the word.
     std::uint32_t flip = 0;
 
     // FastOp::TimerK / CounterK: their element in Program::fastElements, held in the bytes of
@@ -348,9 +348,10 @@ struct FastElement {
     std::int32_t setWord = -1; // the word the set value is copied to (Step::y; else dest)
     std::int32_t bitWord = 0;  // the done bit
     std::uint32_t bitMask = 0;
-    std::int32_t set = 0;     // the K value, not below 0
-    std::int32_t base = 1;    // timers: the time base in ms
-    std::int64_t limitMs = 0; // timers: set * base, where the accumulated time stops
+    std::uint32_t bitKeep = ~0u; // ~bitMask (Engine::writeBit)
+    std::int32_t set = 0;        // the K value, not below 0
+    std::int32_t base = 1;       // timers: the time base in ms
+    std::int64_t limitMs = 0;    // timers: set * base, where the accumulated time stops
     // Timers: accumulated ms / base as (ms * magic) >> kFastDivShift, exact while the ms stay
     // below 2^25 (buildFastSteps keeps the others on FastOp::Timer).
     std::uint64_t magic = 0;
@@ -461,9 +462,11 @@ struct Program {
     std::vector<Step> steps;    // index = instruction index in the list
     std::vector<FastStep> fast; // one per step and a Stop (buildFastSteps, compile_fast.cpp)
     std::vector<FastElement> fastElements; // FastOp::TimerK / CounterK
-    // Some step may turn the gate OFF (STL, STEP(08), MC / IL and what ends them): the fast
-    // loop reads the gate at every contact only then (buildFastSteps).
-    bool gatedSteps = false;
+    // The fast loop's guarded form (buildFastSteps): some step may turn the gate OFF (STL,
+    // STEP(08), MC / IL and what ends them), so every contact reads it; or a step may move
+    // the scan elsewhere (a jump, a subroutine) or a rung hold more LDs or MPSs than the
+    // stacks, so the stacks' bounds are tested. Without, the steps' order bounds the stacks.
+    bool guarded = false;
     std::vector<int> lines; // source line of each step
     std::vector<BitRef> bitLists;
     std::vector<ResetTarget> resets;

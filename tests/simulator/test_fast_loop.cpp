@@ -219,6 +219,51 @@ TEST(FastLoop, ConstantTimersCountersAndOneContactRungsScanAsTheFullInterpreter)
     expectSameScans(sim.result.program, in, {sim.at("Y1"), sim.at("Y3")}, 200, 19, 2);
 }
 
+// The loop without guards (Program::guarded false) reads no gate and tests no stack bound: only
+// where no step moves the scan elsewhere and no rung holds as many LDs or MPSs as the stacks.
+// Where a jump or a subroutine could bring a step its stacks from elsewhere, or a rung's own
+// MPSs reach the push stack's bound, the guarded loop runs, and the results are the full
+// interpreter's.
+TEST(FastLoop, TheStacksBoundsAreTestedOnlyWhereTheStepsOrderDoesNotBoundThem) {
+    auto target = test::makeTestTarget();
+    const CompileResult bench = compileProgram(test::assemble(*target, bench::mixedProgram()));
+    ASSERT_TRUE(bench.ok());
+    EXPECT_FALSE(bench.program->guarded);
+
+    test::TableSim jump(
+        "LD X0\nJMP K1\nLD X1\nOUT Y0\nJME K1\nLD X2\nLD X3\nOR X4\nANB\nOUT Y1\nEND");
+    ASSERT_TRUE(jump.result.ok());
+    EXPECT_TRUE(jump.result.program->guarded);
+    test::TableSim step("LD SM9002\nSET S0\nSTL S0\nOUT Y0\nRET\nEND");
+    ASSERT_TRUE(step.result.ok());
+    EXPECT_TRUE(step.result.program->guarded);
+
+    // 40 output branches on one rung: never deeper than one MPS, but 40 of them in the rung's
+    // order, more than the push stack's 32: guarded (the bound is the count, not the depth).
+    QString branches = QStringLiteral("LD X0\n");
+    for (int k = 0; k < 40; ++k)
+        branches += QStringLiteral("MPS\nAND X%1\nOUT M%2\nMPP\n").arg(k % 4 + 1).arg(k);
+    branches += QStringLiteral("OUT Y0\nEND");
+    test::TableSim many(branches.toLatin1().constData());
+    ASSERT_TRUE(many.result.ok()) << many.result.diagnostics.front().message.toStdString();
+    EXPECT_TRUE(many.result.program->guarded);
+    // 31 on the rung: bounded.
+    QString fewer = QStringLiteral("LD X0\n");
+    for (int k = 0; k < 31; ++k)
+        fewer += QStringLiteral("MPS\nAND X%1\nOUT M%2\nMPP\n").arg(k % 4 + 1).arg(k);
+    fewer += QStringLiteral("OUT Y0\nEND");
+    test::TableSim few(fewer.toLatin1().constData());
+    ASSERT_TRUE(few.result.ok());
+    EXPECT_FALSE(few.result.program->guarded);
+
+    std::vector<model::Address> in;
+    for (const char *x : {"X0", "X1", "X2", "X3", "X4"})
+        in.push_back(jump.at(x));
+    expectSameScans(jump.result.program, in, {jump.at("Y1")}, 200, 29, 2);
+    expectSameScans(many.result.program, in, {many.at("M3")}, 200, 31, 2);
+    expectSameScans(few.result.program, in, {few.at("M3")}, 200, 37, 2);
+}
+
 // An online edit lowers a running timer's K below the time it has counted: the lean timer stops
 // at the new limit and is done at once, as the full one, scan after scan, and clears when its
 // input goes OFF.
