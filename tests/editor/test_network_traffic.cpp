@@ -18,6 +18,7 @@
 #include <QComboBox>
 #include <QFile>
 #include <QItemSelectionModel>
+#include <QJsonObject>
 #include <QLabel>
 #include <QSignalSpy>
 #include <QTableView>
@@ -168,6 +169,65 @@ TEST(NetworkTrafficView, DecodesTheFramesOfARealRun) {
                   ->text()
                   .indexOf(QString::number(run.records.size())),
               -1);
+}
+
+// The cpm1-host-link example (the CPM1's peripheral port, Host Link) with a host on the port
+// instead of its bridge's pseudo-terminal: the spec's read of DM 0000 ("@00RD0000000157*")
+// passes, and the table shows it decoded, the PLC's answer read against it.
+TEST(NetworkTrafficView, DecodesAHostLinkReadOfTheCpm1Example) {
+    network::NetworkDescription d;
+    QString error;
+    ASSERT_TRUE(network::readNetworkFile(
+        kExamples + QStringLiteral("cpm1-host-link/cpm1-host-link.rungnet"), &d, &error))
+        << error.toStdString();
+    d.bridges.clear();
+    network::DeviceDescription host;
+    host.name = QStringLiteral("host");
+    host.kind = QStringLiteral("line");
+    host.json = QJsonObject{{QStringLiteral("name"), host.name},
+                            {QStringLiteral("kind"), host.kind},
+                            {QStringLiteral("baud"), 9600},
+                            {QStringLiteral("frame"), QStringLiteral("7E2")}};
+    d.devices.push_back(host);
+    network::WireDescription wire;
+    wire.name = QStringLiteral("w1");
+    wire.ends = {QStringLiteral("cpm1/PERIPHERAL"), host.name};
+    d.wires.push_back(wire);
+    std::unique_ptr<network::Network> net =
+        network::Network::build(d, app::cliProgramLoader(), &error);
+    ASSERT_TRUE(net) << error.toStdString();
+    std::vector<network::TrafficRecord> records;
+    net->setTrafficSink([&records](const network::TrafficRecord &r) { records.push_back(r); });
+    NetworkTrafficView view;
+    view.resize(1366, 500);
+    view.setNetwork(*net);
+    ASSERT_TRUE(net->runUntil(100'000));
+    net->inject(net->endpoint(QStringLiteral("host")), "@00RD0000000157*\r");
+    ASSERT_TRUE(net->runUntil(200'000));
+    ASSERT_EQ(records.size(), 2u);
+    view.append(records);
+    QAbstractItemModel *shown = view.table()->model();
+    ASSERT_EQ(shown->rowCount(), 2);
+    const auto cell = [&](int row, int column) {
+        return shown->index(row, column).data().toString().toStdString();
+    };
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Sender), "host");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Receiver), "cpm1/PERIPHERAL");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Protocol), "Host Link");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Station), "0");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Command), "\u2192 RD read DM words");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Address), "DM 0000 (0000)");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Count), "1");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Error), "");
+    // The batch count DM 0000 is 0 after a start: the PLC's reply carries it.
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Sender), "cpm1/PERIPHERAL");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Receiver), "host");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Protocol), "Host Link");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Command), "\u2190 RD read DM words");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Address), "DM 0000 (0000)");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Data), "0000");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Error), "");
+    EXPECT_FALSE(shown->index(1, 0).data(NetworkTrafficModel::FailedRole).toBool());
 }
 
 TEST(NetworkTrafficView, FiltersByWireStationAndErrors) {
