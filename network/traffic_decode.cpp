@@ -1,5 +1,6 @@
 #include "network/traffic_decode.h"
 
+#include "network/bridge.h"
 #include "network/devices.h"
 #include "network/station.h"
 #include "network/tr.h"
@@ -278,66 +279,90 @@ struct TrafficDecoder::Pending {
 TrafficDecoder::TrafficDecoder(const Network &network) {
     for (const auto &wire : network.wires()) {
         QStringList names;
-        for (const Endpoint *e : wire->ends) {
-            End end;
-            end.name = e->name;
-            end.owner = e->owner;
-            end.wire = wire->name;
-            if (const auto *port = dynamic_cast<const StationPort *>(e)) {
-                const model::PortConfig &config = port->config();
-                const model::PortApplication &app = *config.application;
-                const Station *station = network.station(e->owner);
-                end.target = station ? &station->target() : nullptr;
-                end.application = QCoreApplication::translate("rung::model::Target", app.name);
-                end.station = config.station;
-                end.modbusAscii = config.modbusAscii;
-                end.sharedLink = app.sharedLink != 0;
-                end.programDriven = app.programDriven;
-                if (app.answers == model::ProtocolId::HostLink) {
-                    // A CPM1's peripheral port: the PLC's side of Host Link; the host is a
-                    // bridge's real line or a device on the wire.
-                    end.speaks = Speaks::HostLink;
-                    end.answers = true;
-                } else if (app.answers == model::ProtocolId::VigorLink) {
-                    end.speaks = Speaks::VigorLink;
-                    end.answers = true;
-                    // LINK drives the port: its program is the master (Easy Link, B-3-3).
-                    end.master = port->usedByProgram();
-                } else if (app.answers == model::ProtocolId::Modbus ||
-                           (app.master && app.published)) {
-                    end.speaks = Speaks::Modbus;
-                    // Station 0 of the Vigor's MODBUS is MBUS's master (B-3-6).
-                    end.master = app.master || config.station == 0;
-                    end.answers = model::answersAt(app, config.station);
-                    // A PL110 port its program may switch to free-port (SEND; PL110 manual
-                    // 4.2.19) sends bytes of no protocol then.
-                    const model::PortSpec *spec = end.target->port(config.port);
-                    end.programDriven =
-                        !app.master && spec && spec->markers.freePort && port->usedByProgram();
-                    if (const auto *map =
-                            model::findProtocolMap(*end.target, model::ProtocolId::Modbus))
-                        end.anyStation = map->anyStationUnit;
-                }
-            } else if (const auto *slave = dynamic_cast<const ModbusSlaveDevice *>(e)) {
-                end.speaks = Speaks::Modbus;
-                end.answers = true;
-                end.station = slave->station;
-                end.application = TrafficDecodeTr::tr("MODBUS slave device");
-                for (const DeviceDescription &d : network.description().devices)
-                    if (d.name == e->name)
-                        end.modbusAscii = d.json.value(QStringLiteral("mode")).toString() ==
-                                          QStringLiteral("ascii");
-            } else {
-                end.programDriven = true;
-                end.application = dynamic_cast<const LineDevice *>(e)
-                                      ? TrafficDecodeTr::tr("line device")
-                                      : TrafficDecodeTr::tr("real line");
-            }
-            names << end.name;
-            m_ends[end.name] = end;
-        }
+        for (const Endpoint *e : wire->ends)
+            names << learn(network, *e, wire->name);
         m_wires[wire->name] = names;
     }
+    // A bridge's real line joins its port's wire when the bridge opens, after the decoder
+    // learnt the wiring (NetworkSession::startBridges): it is learnt now from the description,
+    // with its port, on the wire the port will be on (its own, named as the bridge's end, when
+    // the file puts the port on none: Network::attach).
+    for (const BridgeDescription &b : network.description().bridges) {
+        const Endpoint *port = network.endpoint(b.end);
+        if (!port || dynamic_cast<const StationPort *>(port) == nullptr)
+            continue;
+        const QString bridge = bridgeEndName(b.end);
+        const QString wire = port->wire ? port->wire->name : bridge;
+        QStringList &names = m_wires[wire];
+        if (!port->wire)
+            names << learn(network, *port, wire);
+        End line;
+        line.name = bridge;
+        line.owner = bridge;
+        line.wire = wire;
+        line.programDriven = true;
+        line.application = TrafficDecodeTr::tr("real line");
+        names << bridge;
+        m_ends[bridge] = line;
+    }
+}
+
+QString TrafficDecoder::learn(const Network &network, const Endpoint &endpoint,
+                              const QString &wire) {
+    const Endpoint *e = &endpoint;
+    End end;
+    end.name = e->name;
+    end.owner = e->owner;
+    end.wire = wire;
+    if (const auto *port = dynamic_cast<const StationPort *>(e)) {
+        const model::PortConfig &config = port->config();
+        const model::PortApplication &app = *config.application;
+        const Station *station = network.station(e->owner);
+        end.target = station ? &station->target() : nullptr;
+        end.application = QCoreApplication::translate("rung::model::Target", app.name);
+        end.station = config.station;
+        end.modbusAscii = config.modbusAscii;
+        end.sharedLink = app.sharedLink != 0;
+        end.programDriven = app.programDriven;
+        if (app.answers == model::ProtocolId::HostLink) {
+            // A CPM1's peripheral port: the PLC's side of Host Link; the host is a
+            // bridge's real line or a device on the wire.
+            end.speaks = Speaks::HostLink;
+            end.answers = true;
+        } else if (app.answers == model::ProtocolId::VigorLink) {
+            end.speaks = Speaks::VigorLink;
+            end.answers = true;
+            // LINK drives the port: its program is the master (Easy Link, B-3-3).
+            end.master = port->usedByProgram();
+        } else if (app.answers == model::ProtocolId::Modbus || (app.master && app.published)) {
+            end.speaks = Speaks::Modbus;
+            // Station 0 of the Vigor's MODBUS is MBUS's master (B-3-6).
+            end.master = app.master || config.station == 0;
+            end.answers = model::answersAt(app, config.station);
+            // A PL110 port its program may switch to free-port (SEND; PL110 manual
+            // 4.2.19) sends bytes of no protocol then.
+            const model::PortSpec *spec = end.target->port(config.port);
+            end.programDriven =
+                !app.master && spec && spec->markers.freePort && port->usedByProgram();
+            if (const auto *map = model::findProtocolMap(*end.target, model::ProtocolId::Modbus))
+                end.anyStation = map->anyStationUnit;
+        }
+    } else if (const auto *slave = dynamic_cast<const ModbusSlaveDevice *>(e)) {
+        end.speaks = Speaks::Modbus;
+        end.answers = true;
+        end.station = slave->station;
+        end.application = TrafficDecodeTr::tr("MODBUS slave device");
+        for (const DeviceDescription &d : network.description().devices)
+            if (d.name == e->name)
+                end.modbusAscii =
+                    d.json.value(QStringLiteral("mode")).toString() == QStringLiteral("ascii");
+    } else {
+        end.programDriven = true;
+        end.application = dynamic_cast<const LineDevice *>(e) ? TrafficDecodeTr::tr("line device")
+                                                              : TrafficDecodeTr::tr("real line");
+    }
+    m_ends[end.name] = end;
+    return end.name;
 }
 
 TrafficDecoder::~TrafficDecoder() = default;

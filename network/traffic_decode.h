@@ -99,6 +99,8 @@ public:
 
 private:
     struct Pending; // the last request on a wire
+    // Learns an end on `wire`; returns its name.
+    QString learn(const Network &network, const Endpoint &endpoint, const QString &wire);
     const End *end(const QString &name) const;
     // Forgets the wire's last request; true when it was waiting for a slave's reply.
     bool takeUnanswered(const QString &wire);

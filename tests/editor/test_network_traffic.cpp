@@ -8,6 +8,8 @@
 #include "app/gui/language.h"
 #include "app/gui/network_traffic_model.h"
 #include "app/gui/network_traffic_view.h"
+#include "comms/transport/pty_transport.h"
+#include "network/bridge.h"
 #include "network/traffic.h"
 #include "network/traffic_decode.h"
 
@@ -18,7 +20,6 @@
 #include <QComboBox>
 #include <QFile>
 #include <QItemSelectionModel>
-#include <QJsonObject>
 #include <QLabel>
 #include <QSignalSpy>
 #include <QTableView>
@@ -171,28 +172,17 @@ TEST(NetworkTrafficView, DecodesTheFramesOfARealRun) {
               -1);
 }
 
-// The cpm1-host-link example (the CPM1's peripheral port, Host Link) with a host on the port
-// instead of its bridge's pseudo-terminal: the spec's read of DM 0000 ("@00RD0000000157*")
-// passes, and the table shows it decoded, the PLC's answer read against it.
+// The cpm1-host-link example (the CPM1's peripheral port, Host Link) as the IDE runs it: the
+// view learns the wiring when the network is built, then the port's bridge opens (a
+// pseudo-terminal here) and the spec's read of DM 0000 ("@00RD0000000157*") comes from its
+// real line. The table shows the command decoded and the PLC's answer read against it.
 TEST(NetworkTrafficView, DecodesAHostLinkReadOfTheCpm1Example) {
     network::NetworkDescription d;
     QString error;
     ASSERT_TRUE(network::readNetworkFile(
         kExamples + QStringLiteral("cpm1-host-link/cpm1-host-link.rungnet"), &d, &error))
         << error.toStdString();
-    d.bridges.clear();
-    network::DeviceDescription host;
-    host.name = QStringLiteral("host");
-    host.kind = QStringLiteral("line");
-    host.json = QJsonObject{{QStringLiteral("name"), host.name},
-                            {QStringLiteral("kind"), host.kind},
-                            {QStringLiteral("baud"), 9600},
-                            {QStringLiteral("frame"), QStringLiteral("7E2")}};
-    d.devices.push_back(host);
-    network::WireDescription wire;
-    wire.name = QStringLiteral("w1");
-    wire.ends = {QStringLiteral("cpm1/PERIPHERAL"), host.name};
-    d.wires.push_back(wire);
+    ASSERT_EQ(d.bridges.size(), 1u);
     std::unique_ptr<network::Network> net =
         network::Network::build(d, app::cliProgramLoader(), &error);
     ASSERT_TRUE(net) << error.toStdString();
@@ -201,8 +191,12 @@ TEST(NetworkTrafficView, DecodesAHostLinkReadOfTheCpm1Example) {
     NetworkTrafficView view;
     view.resize(1366, 500);
     view.setNetwork(*net);
+    std::shared_ptr<comms::Transport> pty = comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    network::BridgeEndpoint *line = network::attachBridgeLine(*net, d.bridges[0].end, pty, &error);
+    ASSERT_NE(line, nullptr) << error.toStdString();
     ASSERT_TRUE(net->runUntil(100'000));
-    net->inject(net->endpoint(QStringLiteral("host")), "@00RD0000000157*\r");
+    net->inject(line, "@00RD0000000157*\r");
     ASSERT_TRUE(net->runUntil(200'000));
     ASSERT_EQ(records.size(), 2u);
     view.append(records);
@@ -211,7 +205,7 @@ TEST(NetworkTrafficView, DecodesAHostLinkReadOfTheCpm1Example) {
     const auto cell = [&](int row, int column) {
         return shown->index(row, column).data().toString().toStdString();
     };
-    EXPECT_EQ(cell(0, NetworkTrafficModel::Sender), "host");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Sender), "bridge:cpm1/PERIPHERAL");
     EXPECT_EQ(cell(0, NetworkTrafficModel::Receiver), "cpm1/PERIPHERAL");
     EXPECT_EQ(cell(0, NetworkTrafficModel::Protocol), "Host Link");
     EXPECT_EQ(cell(0, NetworkTrafficModel::Station), "0");
@@ -221,7 +215,7 @@ TEST(NetworkTrafficView, DecodesAHostLinkReadOfTheCpm1Example) {
     EXPECT_EQ(cell(0, NetworkTrafficModel::Error), "");
     // The batch count DM 0000 is 0 after a start: the PLC's reply carries it.
     EXPECT_EQ(cell(1, NetworkTrafficModel::Sender), "cpm1/PERIPHERAL");
-    EXPECT_EQ(cell(1, NetworkTrafficModel::Receiver), "host");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Receiver), "bridge:cpm1/PERIPHERAL");
     EXPECT_EQ(cell(1, NetworkTrafficModel::Protocol), "Host Link");
     EXPECT_EQ(cell(1, NetworkTrafficModel::Command), "\u2190 RD read DM words");
     EXPECT_EQ(cell(1, NetworkTrafficModel::Address), "DM 0000 (0000)");

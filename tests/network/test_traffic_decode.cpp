@@ -5,12 +5,14 @@
 
 #include "network_fixture.h"
 
+#include "network/bridge.h"
 #include "network/traffic_decode.h"
 
 #include "comms/protocol/host_link_master.h"
 #include "comms/protocol/modbus_master.h"
 #include "comms/protocol/modbus_slave.h"
 #include "comms/protocol/vigor_link_slave.h"
+#include "comms/transport/pty_transport.h"
 
 #include <QDirIterator>
 
@@ -360,6 +362,44 @@ TEST(TrafficDecode, AHostLinkCommandWithAWrongFcsAndThePlcsEndCode13) {
     EXPECT_EQ(f[1].errorCode, 0x13);
     EXPECT_EQ(f[1].errorText, comms::hostlink::endCodeText(0x13));
     EXPECT_EQ(f[1].problem.toStdString(), "");
+}
+
+// The cpm1-host-link example: the peripheral port is on no wire of the file, and its bridge's
+// real line joins it when the bridge opens, after the decoder learnt the wiring (the IDE's
+// Traffic view learns it when the session is built). The decoder knows the line and its wire
+// from the file's bridges: the host's read through the line is a Host Link command, the
+// PLC's answer its reply.
+TEST(TrafficDecode, TheCpm1ExamplesBridgedPortIsDecodedThoughTheLineOpensLater) {
+    NetRun run =
+        runNetwork({}, {}, {},
+                   QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/cpm1-host-link/"
+                                                  "cpm1-host-link.rungnet"));
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    TrafficDecoder decoder(*run.net);
+    QString error;
+    std::shared_ptr<comms::Transport> pty = comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    BridgeEndpoint *line =
+        attachBridgeLine(*run.net, QStringLiteral("cpm1/PERIPHERAL"), pty, &error);
+    ASSERT_NE(line, nullptr) << error.toStdString();
+    ASSERT_TRUE(run.net->runUntil(100'000));
+    run.net->inject(line, "@00RD0000000157*\r");
+    ASSERT_TRUE(run.net->runUntil(200'000));
+    ASSERT_EQ(run.records.size(), 2u);
+    const DecodedFrame request = decoder.decode(run.records[0]);
+    EXPECT_EQ(run.records[0].sender.toStdString(), "bridge:cpm1/PERIPHERAL");
+    EXPECT_EQ(request.kind, DecodedFrame::Kind::Request);
+    EXPECT_EQ(request.protocol.toStdString(), "Host Link");
+    EXPECT_EQ(request.receiver.toStdString(), "cpm1/PERIPHERAL");
+    EXPECT_EQ(request.commandText.toStdString(), "RD read DM words");
+    EXPECT_EQ(request.address.toStdString(), "DM 0000 (0000)");
+    const DecodedFrame reply = decoder.decode(run.records[1]);
+    EXPECT_EQ(reply.kind, DecodedFrame::Kind::Reply);
+    EXPECT_EQ(reply.receiver.toStdString(), "bridge:cpm1/PERIPHERAL");
+    EXPECT_EQ(reply.data.toStdString(), "0000"); // the batch count after a start
+    EXPECT_EQ(reply.problem.toStdString(), "");
+    EXPECT_EQ(decoder.ownerOf(QStringLiteral("bridge:cpm1/PERIPHERAL")).toStdString(),
+              "bridge:cpm1/PERIPHERAL");
 }
 
 // Frames cut short (no "*" CR) and bytes that are no frame: what is wrong, never a crash; the
