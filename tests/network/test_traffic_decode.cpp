@@ -16,6 +16,8 @@
 
 #include <QDirIterator>
 
+#include <random>
+
 using namespace rung;
 using namespace rung::network;
 using namespace rung::network::test;
@@ -509,6 +511,36 @@ TEST(TrafficDecode, HostLinkFramesInPartsAndTheirDelimiters) {
     const DecodedFrame refused = decoder.decode(transmission("plc/PERIPHERAL", "@00WD0152*\r"));
     EXPECT_EQ(refused.errorCode, 0x01);
     EXPECT_EQ(refused.count, 40);
+}
+
+// Whatever comes on a Host Link wire, from the host or the PLC, in whatever order: every
+// prefix of the spec's vectors and of their replies, and bytes made of the characters Host
+// Link frames are built of, are read as something, never a crash; a cut vector says so.
+TEST(TrafficDecode, AnyBytesOnAHostLinkWireAreReadWithoutACrash) {
+    const NetRun run = runNetwork(kHostAndCpm1, kCpm1);
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    TrafficDecoder decoder(*run.net);
+    const QByteArray frames[] = {"@00RD0000000157*\r", "@00RD00123452*\r",     "@00WD0100123456*\r",
+                                 "@00WD0152*\r",       "@00KSCIO 0010003C*\r", "@00MS5E*\r"};
+    for (const QByteArray &frame : frames)
+        for (qsizetype n = 1; n <= frame.size(); ++n)
+            for (const char *sender : {"host", "plc/PERIPHERAL"}) {
+                const DecodedFrame f = decoder.decode(transmission(sender, frame.first(n)));
+                EXPECT_FALSE(f.protocol.isEmpty()) << sender << ' ' << frame.first(n).data();
+                if (n < frame.size() - 1 && frame.front() == '@' && sender[0] == 'h')
+                    EXPECT_TRUE(f.failed()) << frame.first(n).data();
+            }
+    std::mt19937 random(30);
+    const QByteArray alphabet = "@*\r0123456789ABCDEFRDWMSCKI ";
+    for (int i = 0; i < 3000; ++i) {
+        QByteArray bytes;
+        const int size = 1 + int(random() % 300);
+        for (int c = 0; c < size; ++c)
+            bytes += alphabet[qsizetype(random() % std::uint32_t(alphabet.size()))];
+        const DecodedFrame f =
+            decoder.decode(transmission(random() % 2 ? "host" : "plc/PERIPHERAL", bytes));
+        EXPECT_FALSE(f.protocol.isEmpty()) << bytes.data();
+    }
 }
 
 // Each example of the manuals, run for three seconds of virtual time: every frame on every
