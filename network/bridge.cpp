@@ -15,11 +15,15 @@
 
 namespace rung::network {
 
+QString bridgeEndName(const QString &port) {
+    return QStringLiteral("bridge:") + port;
+}
+
 BridgeEndpoint::BridgeEndpoint(const QString &portName, const model::SerialSettings &line,
                                std::shared_ptr<comms::Transport> transport)
     : m_line(line)
     , m_transport(std::move(transport)) {
-    name = QStringLiteral("bridge:") + portName;
+    name = bridgeEndName(portName);
     owner = name;
 }
 

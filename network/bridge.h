@@ -19,6 +19,10 @@
 
 namespace rung::network {
 
+// The name of the real line's end beside a port ("bridge:s5/CP2"); a port on no wire gets a
+// wire of the same name when the bridge opens (Network::attach).
+QString bridgeEndName(const QString &port);
+
 // The real line's end on a wire: what the wire delivers is written to the line. The line is
 // shared: the IDE keeps a bridge's pseudo-terminal open across the networks a Stop builds
 // again (network_session_bridges.cpp), so that a master on it need not be told a new path.

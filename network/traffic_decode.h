@@ -33,18 +33,22 @@ struct DecodedFrame {
         Exchange, // CPU Link, Parallel Link: no frame, only what was exchanged (the note)
     };
     Kind kind = Kind::Raw;
-    QString protocol; // translated: "Computer Link", "MODBUS RTU", "MODBUS ASCII", "text"
+    QString protocol; // translated: "Computer Link", "MODBUS RTU", "MODBUS ASCII", "Host Link"
     QString receiver; // the end the frame is for ("s5/CP2", "tc"); a reply's: the master
     int station = -1; // the station number the frame names; -1: none
-    int command = -1; // Computer Link command, MODBUS function; -1: none
+    // Computer Link command, MODBUS function, Host Link header (its two characters, the first
+    // in the high byte: RD is 5244h); -1: none.
+    int command = -1;
     QString commandText;
     int rawAddress = -1; // as on the wire; -1: none
-    QString address;     // "D1 (1C02h)", "D100 (100)", "100" where no map applies
-    int count = -1;      // bytes (Computer Link), registers or bits (MODBUS); -1: none
-    QString data;        // the values carried, or the frame as text for a raw frame
-    int errorCode = -1;  // the PLC's error / exception code; -1: none
-    QString errorText;   // translated: "illegal data address (exception 02h)"
-    QString problem;     // translated: what is wrong with the frame; empty when it reads
+    QString address;     // "D1 (1C02h)", "D100 (100)", "DM 0000 (0000)", "100" where no map applies
+    // bytes (Computer Link), registers or bits (MODBUS), words, present values or flags (Host
+    // Link); -1: none
+    int count = -1;
+    QString data;       // the values carried, or the frame as text for a raw frame
+    int errorCode = -1; // the PLC's error / exception / end code; -1: none
+    QString errorText;  // translated: "illegal data address (exception 02h)"
+    QString problem;    // translated: what is wrong with the frame; empty when it reads
     // A request that comes while the last request on its wire is still unanswered: that one
     // got no reply (a time-out, a silent or absent slave). The request itself is fine.
     bool previousUnanswered = false;
@@ -76,7 +80,12 @@ public:
         QString name;  // "master/CP2", "tc"
         QString owner; // "master", "tc"
         QString wire;
-        enum class Speaks : std::uint8_t { Nothing, VigorLink, Modbus } speaks = Speaks::Nothing;
+        enum class Speaks : std::uint8_t {
+            Nothing,
+            VigorLink,
+            Modbus,
+            HostLink
+        } speaks = Speaks::Nothing;
         bool answers = false;       // a slave of its protocol (it answers `station`)
         bool master = false;        // its program is the master of its protocol
         bool programDriven = false; // RS, VB-1COM; a PL110 port its program may switch to free-port
@@ -90,6 +99,8 @@ public:
 
 private:
     struct Pending; // the last request on a wire
+    // Learns an end on `wire`; returns its name.
+    QString learn(const Network &network, const Endpoint &endpoint, const QString &wire);
     const End *end(const QString &name) const;
     // Forgets the wire's last request; true when it was waiting for a slave's reply.
     bool takeUnanswered(const QString &wire);
@@ -99,6 +110,12 @@ private:
                                      const QString &wire);
     DecodedFrame decodeModbusReply(const End &from, const QByteArray &bytes, bool ascii,
                                    const QString &wire);
+    DecodedFrame decodeHostLinkRequest(const End &from, const QByteArray &bytes,
+                                       const QString &wire);
+    DecodedFrame decodeHostLinkReply(const End &from, const QByteArray &bytes, const QString &wire);
+    // True when the bytes go on a Host Link exchange of the wire: a command ("@..."), the
+    // next part of a command in parts, the host's CR for the next part of a reply.
+    bool continuesHostLink(const End &from, const QByteArray &bytes, const QString &wire) const;
     DecodedFrame raw(const End *from, const QByteArray &bytes, const QString &wire) const;
     // The end on the wire that answers `station` with the protocol; null: none.
     const End *slaveOn(const QString &wire, End::Speaks speaks, int station) const;

@@ -3089,11 +3089,11 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
     </message>
     <message>
         <location line="+2"/>
-        <source>Bytes (Computer Link), registers or bits (MODBUS), characters (text)</source>
-        <translation>Bájtok (Computer Link), regiszterek vagy bitek (MODBUS), karakterek (szöveg)</translation>
+        <source>Bytes (Computer Link), registers or bits (MODBUS), words, present values or flags (Host Link), characters (text)</source>
+        <translation>Bájtok (Computer Link), regiszterek vagy bitek (MODBUS), szavak, aktuális értékek vagy jelzők (Host Link), karakterek (szöveg)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>The PLC&apos;s error or exception code, or what is wrong with the frame</source>
         <translation>A PLC hiba- vagy kivételkódja, vagy hogy mi a hiba a keretben</translation>
     </message>
@@ -6145,7 +6145,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Host Link: a(z) %1 válasza túlmegy a parancs által kért %2 adatkarakteren (%3. rész): nem erre a parancsra érkezett válasz</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/host_link_slave.cpp" line="+39"/>
+        <location filename="../comms/protocol/host_link_slave.cpp" line="+45"/>
         <source>Host Link: %1 characters arrived before the command was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Host Link: %1 karakter érkezett, mielőtt a parancs választ kapott volna; az első %3 utáni %2 karakter eldobva</translation>
     </message>
@@ -6155,12 +6155,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Host Link: a(z) %2 parancs %1. része helyett új parancs kezdődött; a befejezetlen parancs eldobva</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+19"/>
         <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
         <translation>Host Link: %1 karakter CR nélkül (egy rész legfeljebb %2 karakter): eldobva, várakozás a következő &quot;@&quot; jelre</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+30"/>
         <source>Host Link: the %1 command goes on past %2 characters in %3 parts, longer than any command; answered with end code 18</source>
         <translation>Host Link: a(z) %1 parancs %3 részben túlmegy %2 karakteren, hosszabb bármely parancsnál; válasz: 18-as végkód</translation>
     </message>
@@ -11320,7 +11320,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>ütközés ezzel: %1; mindkét keret sérült</translation>
     </message>
     <message>
-        <location filename="../network/bridge.cpp" line="+39"/>
+        <location filename="../network/bridge.cpp" line="+43"/>
         <source>%1: no station port &quot;%2&quot;</source>
         <translation>%1: nincs „%2” állomásport</translation>
     </message>
@@ -11728,7 +11728,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::TrafficDecode</name>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="+30"/>
+        <location filename="../network/traffic_decode.cpp" line="+35"/>
         <source>read coils</source>
         <translation>tekercsek olvasása</translation>
     </message>
@@ -11794,8 +11794,129 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+37"/>
         <source>unknown command</source>
         <translation>ismeretlen parancs</translation>
+    </message>
+    <message>
+        <location line="-26"/>
+        <source>read IR/SR words</source>
+        <translation>IR/SR csatornák olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read HR words</source>
+        <translation>HR csatornák olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read DM words</source>
+        <translation>DM szavak olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read timer/counter PVs</source>
+        <translation>időzítők/számlálók aktuális értékének olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read completion flags</source>
+        <translation>lejárt-jelzők olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read LR words</source>
+        <translation>LR csatornák olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read AR words</source>
+        <translation>AR csatornák olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write IR/SR words</source>
+        <translation>IR/SR csatornák írása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write HR words</source>
+        <translation>HR csatornák írása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write DM words</source>
+        <translation>DM szavak írása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write timer/counter PVs</source>
+        <translation>időzítők/számlálók aktuális értékének írása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write LR words</source>
+        <translation>LR csatornák írása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write AR words</source>
+        <translation>AR csatornák írása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read status</source>
+        <translation>állapot olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>change mode</source>
+        <translation>üzemmód váltása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read errors</source>
+        <translation>hibák olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read model</source>
+        <translation>típus olvasása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force set</source>
+        <translation>kényszerítés BE</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force reset</source>
+        <translation>kényszerítés KI</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cancel all forcing</source>
+        <translation>minden kényszerítés feloldása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>test</source>
+        <translation>teszt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>command not recognised</source>
+        <translation>nem felismert parancs</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>part %1 of a frame in parts: the other side answers CR for the next</source>
+        <translation>részekre bontott keret %1. része: a másik fél CR-rel kéri a következőt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>CR: the next part, please</source>
+        <translation>CR: kérem a következő részt</translation>
     </message>
     <message>
         <location line="+40"/>
@@ -11817,22 +11938,39 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+126"/>
         <source>MODBUS slave device</source>
         <translation>MODBUS slave eszköz</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>line device</source>
         <translation>soros vonali eszköz</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+421"/>
+        <location line="+130"/>
+        <source>Host Link</source>
+        <translation>Host Link</translation>
+    </message>
+    <message>
+        <location line="-57"/>
+        <source>wrong FCS (received %1, computed %2): the PLC answers end code 13</source>
+        <translation>hibás FCS (érkezett: %1, számított: %2): a PLC 13-as befejezési kóddal válaszol</translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>not the CR that asks for the next part</source>
+        <translation>nem a következő részt kérő CR</translation>
+    </message>
+    <message>
+        <location line="-627"/>
+        <location line="+58"/>
         <source>real line</source>
         <translation>valódi vonal</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+13"/>
         <source>no reply came before the next request (a time-out)</source>
         <translation>nem jött válasz a következő kérés előtt (időtúllépés)</translation>
     </message>
@@ -11847,7 +11985,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>free-port</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+85"/>
         <location line="+62"/>
         <source>Computer Link</source>
         <translation>Computer Link</translation>
@@ -11863,7 +12001,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>hibás összeg (érkezett: %1, számított: %2): a slave 11h hibával válaszol</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-302"/>
+        <location line="+308"/>
         <source>the slave refuses it: %1</source>
         <translation>a slave elutasítja: %1</translation>
     </message>

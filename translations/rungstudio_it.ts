@@ -3096,11 +3096,11 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
     </message>
     <message>
         <location line="+2"/>
-        <source>Bytes (Computer Link), registers or bits (MODBUS), characters (text)</source>
-        <translation>Byte (Computer Link), registri o bit (MODBUS), caratteri (testo)</translation>
+        <source>Bytes (Computer Link), registers or bits (MODBUS), words, present values or flags (Host Link), characters (text)</source>
+        <translation>Byte (Computer Link), registri o bit (MODBUS), parole, valori correnti o flag (Host Link), caratteri (testo)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>The PLC&apos;s error or exception code, or what is wrong with the frame</source>
         <translation>Il codice di errore o di eccezione del PLC, o che cosa non va nel frame</translation>
     </message>
@@ -6159,7 +6159,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Host Link: la risposta a %1 va oltre i %2 caratteri di dati chiesti dal comando (parte %3): non è la risposta a questo comando</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/host_link_slave.cpp" line="+39"/>
+        <location filename="../comms/protocol/host_link_slave.cpp" line="+45"/>
         <source>Host Link: %1 characters arrived before the command was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Host Link: sono arrivati %1 caratteri prima della risposta al comando; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
@@ -6169,12 +6169,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Host Link: è iniziato un nuovo comando al posto della parte %1 del comando %2; il comando incompleto è stato scartato</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+19"/>
         <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
         <translation>Host Link: %1 caratteri senza CR (una parte ne contiene al massimo %2): scartati, in attesa del prossimo &quot;@&quot;</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+30"/>
         <source>Host Link: the %1 command goes on past %2 characters in %3 parts, longer than any command; answered with end code 18</source>
         <translation>Host Link: il comando %1 va oltre %2 caratteri in %3 parti, più lungo di qualsiasi comando; risposto con codice di fine 18</translation>
     </message>
@@ -11343,7 +11343,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>collisione con %1: entrambi i frame alterati</translation>
     </message>
     <message>
-        <location filename="../network/bridge.cpp" line="+39"/>
+        <location filename="../network/bridge.cpp" line="+43"/>
         <source>%1: no station port &quot;%2&quot;</source>
         <translation>%1: nessuna porta di stazione &quot;%2&quot;</translation>
     </message>
@@ -11751,7 +11751,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::TrafficDecode</name>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="+30"/>
+        <location filename="../network/traffic_decode.cpp" line="+35"/>
         <source>read coils</source>
         <translation>lettura bobine</translation>
     </message>
@@ -11817,8 +11817,129 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+37"/>
         <source>unknown command</source>
         <translation>comando sconosciuto</translation>
+    </message>
+    <message>
+        <location line="-26"/>
+        <source>read IR/SR words</source>
+        <translation>lettura canali IR/SR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read HR words</source>
+        <translation>lettura canali HR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read DM words</source>
+        <translation>lettura parole DM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read timer/counter PVs</source>
+        <translation>lettura valori correnti di temporizzatori/contatori</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read completion flags</source>
+        <translation>lettura flag di completamento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read LR words</source>
+        <translation>lettura canali LR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read AR words</source>
+        <translation>lettura canali AR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write IR/SR words</source>
+        <translation>scrittura canali IR/SR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write HR words</source>
+        <translation>scrittura canali HR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write DM words</source>
+        <translation>scrittura parole DM</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write timer/counter PVs</source>
+        <translation>scrittura valori correnti di temporizzatori/contatori</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write LR words</source>
+        <translation>scrittura canali LR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write AR words</source>
+        <translation>scrittura canali AR</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read status</source>
+        <translation>lettura stato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>change mode</source>
+        <translation>cambio modo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read errors</source>
+        <translation>lettura errori</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read model</source>
+        <translation>lettura modello</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force set</source>
+        <translation>forza ON</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force reset</source>
+        <translation>forza OFF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cancel all forcing</source>
+        <translation>rilascio di tutte le forzature</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>test</source>
+        <translation>test</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>command not recognised</source>
+        <translation>comando non riconosciuto</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>part %1 of a frame in parts: the other side answers CR for the next</source>
+        <translation>parte %1 di un frame in parti: l&apos;altro lato risponde CR per la successiva</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>CR: the next part, please</source>
+        <translation>CR: la parte successiva, prego</translation>
     </message>
     <message>
         <location line="+40"/>
@@ -11842,22 +11963,39 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+126"/>
         <source>MODBUS slave device</source>
         <translation>dispositivo slave MODBUS</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>line device</source>
         <translation>dispositivo di linea</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+421"/>
+        <location line="+130"/>
+        <source>Host Link</source>
+        <translation>Host Link</translation>
+    </message>
+    <message>
+        <location line="-57"/>
+        <source>wrong FCS (received %1, computed %2): the PLC answers end code 13</source>
+        <translation>FCS errato (ricevuto %1, calcolato %2): il PLC risponde con il codice di fine 13</translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>not the CR that asks for the next part</source>
+        <translation>non è il CR che chiede la parte successiva</translation>
+    </message>
+    <message>
+        <location line="-627"/>
+        <location line="+58"/>
         <source>real line</source>
         <translation>linea reale</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+13"/>
         <source>no reply came before the next request (a time-out)</source>
         <translation>nessuna risposta prima della richiesta successiva (timeout)</translation>
     </message>
@@ -11872,7 +12010,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>free-port</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+85"/>
         <location line="+62"/>
         <source>Computer Link</source>
         <translation>Computer Link</translation>
@@ -11888,7 +12026,8 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>somma errata (ricevuta %1, calcolata %2): lo slave risponde con l&apos;errore 11h</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-302"/>
+        <location line="+308"/>
         <source>the slave refuses it: %1</source>
         <translation>lo slave la rifiuta: %1</translation>
     </message>

@@ -263,7 +263,8 @@ QVariant NetworkTrafficModel::headerData(int section, Qt::Orientation orientatio
         case Address:
             return tr("The address as the receiving PLC's device, with the address on the wire");
         case Count:
-            return tr("Bytes (Computer Link), registers or bits (MODBUS), characters (text)");
+            return tr("Bytes (Computer Link), registers or bits (MODBUS), words, present values or "
+                      "flags (Host Link), characters (text)");
         case Error:
             return tr("The PLC's error or exception code, or what is wrong with the frame");
         case Note:

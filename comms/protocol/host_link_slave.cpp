@@ -21,12 +21,18 @@ bool CommandDecoder::takeDelimiterRequest() {
     return std::exchange(m_delimiter, false);
 }
 
-void CommandDecoder::next() {
+void CommandDecoder::forgetCommand() {
     m_parts = 0;
-    m_delimiter = false;
-    m_status = FrameStatus::NeedMore;
     m_command = {};
     m_endCode = 0;
+    m_receivedFcs.clear();
+    m_computedFcs.clear();
+}
+
+void CommandDecoder::next() {
+    forgetCommand();
+    m_delimiter = false;
+    m_status = FrameStatus::NeedMore;
     feed({});
 }
 
@@ -59,9 +65,7 @@ FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
                                "was due; the unfinished command was dropped")
                                .arg(m_parts + 1)
                                .arg(QString::fromLatin1(m_command.header))};
-            m_parts = 0;
-            m_command = {};
-            m_endCode = 0;
+            forgetCommand();
         }
         if (m_parts == 0) {
             const qsizetype at = m_buffer.indexOf('@');
@@ -82,9 +86,7 @@ FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
                                .arg(MaxFirstFrame)};
             const qsizetype again = m_buffer.indexOf('@', 1);
             m_buffer.remove(0, again < 0 ? m_buffer.size() : again);
-            m_parts = 0;
-            m_command = {};
-            m_endCode = 0;
+            forgetCommand();
             continue;
         }
         const QByteArray frame = m_buffer.left(cr);
@@ -119,8 +121,11 @@ FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
             break;
         }
         m_command.text += text;
-        if (!p.fcsOk && !m_endCode)
+        if (!p.fcsOk && !m_endCode) {
             m_endCode = FcsError;
+            m_receivedFcs = p.received;
+            m_computedFcs = p.computed;
+        }
         if (frame.size() + 1 > (first ? MaxFirstFrame : MaxLaterFrame) && !m_endCode)
             m_endCode = FrameLengthError;
         if (p.last)

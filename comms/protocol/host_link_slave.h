@@ -24,18 +24,24 @@ public:
     const Frame &command() const { return m_command; }
     int endCode() const { return m_endCode; }
     const ProtocolError &discarded() const { return m_discarded; }
+    // The FCS of the first part whose FCS is wrong (end code 13), as received and as computed
+    // from the part's characters; both empty while every part's FCS is right.
+    const QByteArray &receivedFcs() const { return m_receivedFcs; }
+    const QByteArray &computedFcs() const { return m_computedFcs; }
     qsizetype buffered() const { return m_buffer.size() + m_command.text.size(); }
     static constexpr qsizetype MaxBuffered = MaxPartBuffer + MaxText;
     void next();
 
 private:
     void keepPending();
+    void forgetCommand(); // the command so far: its parts, text, end code and FCS
     QByteArray m_buffer;
     int m_parts = 0;
     bool m_delimiter = false;
     FrameStatus m_status = FrameStatus::NeedMore;
     Frame m_command;
     int m_endCode = 0;
+    QByteArray m_receivedFcs, m_computedFcs;
     ProtocolError m_discarded;
 };
 

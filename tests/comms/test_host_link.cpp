@@ -188,6 +188,29 @@ TEST(HostLink, SlaveAnswersFcsAndFrameLengthErrorsAndSkipsNoise) {
     EXPECT_EQ(s.endCode(), FrameLengthError);
 }
 
+// The spec's "@00MS5E*" (read status) with its FCS spoiled: the slave says both FCSs (the
+// traffic decoder shows them); a sound command after it has none, nor does a command begun
+// afresh over an unfinished one.
+TEST(HostLink, SlaveSaysTheWrongFcsAsReceivedAndComputed) {
+    CommandDecoder s;
+    ASSERT_EQ(s.feed("@00MS5F*\r"), FrameStatus::Complete);
+    EXPECT_EQ(s.endCode(), FcsError);
+    EXPECT_EQ(s.receivedFcs(), QByteArray("5F"));
+    EXPECT_EQ(s.computedFcs(), QByteArray("5E"));
+    s.next();
+    ASSERT_EQ(s.feed("@00MS5E*\r"), FrameStatus::Complete);
+    EXPECT_EQ(s.endCode(), Normal);
+    EXPECT_TRUE(s.receivedFcs().isEmpty());
+    EXPECT_TRUE(s.computedFcs().isEmpty());
+    s.next();
+    // A first part with a wrong FCS, then a new command where its second part was due.
+    EXPECT_EQ(s.feed("@00WD0000" + QByteArray(4 * 29, '0') + "00\r"), FrameStatus::NeedMore);
+    EXPECT_EQ(s.receivedFcs(), QByteArray("00"));
+    ASSERT_EQ(s.feed("@00MS5E*\r"), FrameStatus::Complete);
+    EXPECT_EQ(s.endCode(), Normal);
+    EXPECT_TRUE(s.receivedFcs().isEmpty());
+}
+
 TEST(HostLink, CommandsReachTheSpacesOfTheCpm1ProtocolMap) {
     // The driver passes the space the CPM1 map gives; every one has its command and back.
     const auto &target = model::Target::get(model::Family::Cpm1);

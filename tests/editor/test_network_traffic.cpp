@@ -8,6 +8,8 @@
 #include "app/gui/language.h"
 #include "app/gui/network_traffic_model.h"
 #include "app/gui/network_traffic_view.h"
+#include "comms/transport/pty_transport.h"
+#include "network/bridge.h"
 #include "network/traffic.h"
 #include "network/traffic_decode.h"
 
@@ -168,6 +170,58 @@ TEST(NetworkTrafficView, DecodesTheFramesOfARealRun) {
                   ->text()
                   .indexOf(QString::number(run.records.size())),
               -1);
+}
+
+// The cpm1-host-link example (the CPM1's peripheral port, Host Link) as the IDE runs it: the
+// view learns the wiring when the network is built, then the port's bridge opens (a
+// pseudo-terminal here) and the spec's read of DM 0000 ("@00RD0000000157*") comes from its
+// real line. The table shows the command decoded and the PLC's answer read against it.
+TEST(NetworkTrafficView, DecodesAHostLinkReadOfTheCpm1Example) {
+    network::NetworkDescription d;
+    QString error;
+    ASSERT_TRUE(network::readNetworkFile(
+        kExamples + QStringLiteral("cpm1-host-link/cpm1-host-link.rungnet"), &d, &error))
+        << error.toStdString();
+    ASSERT_EQ(d.bridges.size(), 1u);
+    std::unique_ptr<network::Network> net =
+        network::Network::build(d, app::cliProgramLoader(), &error);
+    ASSERT_TRUE(net) << error.toStdString();
+    std::vector<network::TrafficRecord> records;
+    net->setTrafficSink([&records](const network::TrafficRecord &r) { records.push_back(r); });
+    NetworkTrafficView view;
+    view.resize(1366, 500);
+    view.setNetwork(*net);
+    std::shared_ptr<comms::Transport> pty = comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    network::BridgeEndpoint *line = network::attachBridgeLine(*net, d.bridges[0].end, pty, &error);
+    ASSERT_NE(line, nullptr) << error.toStdString();
+    ASSERT_TRUE(net->runUntil(100'000));
+    net->inject(line, "@00RD0000000157*\r");
+    ASSERT_TRUE(net->runUntil(200'000));
+    ASSERT_EQ(records.size(), 2u);
+    view.append(records);
+    QAbstractItemModel *shown = view.table()->model();
+    ASSERT_EQ(shown->rowCount(), 2);
+    const auto cell = [&](int row, int column) {
+        return shown->index(row, column).data().toString().toStdString();
+    };
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Sender), "bridge:cpm1/PERIPHERAL");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Receiver), "cpm1/PERIPHERAL");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Protocol), "Host Link");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Station), "0");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Command), "\u2192 RD read DM words");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Address), "DM 0000 (0000)");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Count), "1");
+    EXPECT_EQ(cell(0, NetworkTrafficModel::Error), "");
+    // The batch count DM 0000 is 0 after a start: the PLC's reply carries it.
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Sender), "cpm1/PERIPHERAL");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Receiver), "bridge:cpm1/PERIPHERAL");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Protocol), "Host Link");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Command), "\u2190 RD read DM words");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Address), "DM 0000 (0000)");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Data), "0000");
+    EXPECT_EQ(cell(1, NetworkTrafficModel::Error), "");
+    EXPECT_FALSE(shown->index(1, 0).data(NetworkTrafficModel::FailedRole).toBool());
 }
 
 TEST(NetworkTrafficView, FiltersByWireStationAndErrors) {

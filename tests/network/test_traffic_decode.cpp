@@ -1,17 +1,22 @@
-// The traffic decoder (network/traffic_decode.h): the Computer Link vectors of the spec's
-// protocols page verbatim, MODBUS frames made by the product's own codec, every example
+// The traffic decoder (network/traffic_decode.h): the Computer Link and Host Link vectors of
+// the spec's protocols page verbatim, MODBUS frames made by the product's own codec, every example
 // network's traffic decoded without a problem, and frames a fault or the line spoiled read
 // with what is wrong, never a crash.
 
 #include "network_fixture.h"
 
+#include "network/bridge.h"
 #include "network/traffic_decode.h"
 
+#include "comms/protocol/host_link_master.h"
 #include "comms/protocol/modbus_master.h"
 #include "comms/protocol/modbus_slave.h"
 #include "comms/protocol/vigor_link_slave.h"
+#include "comms/transport/pty_transport.h"
 
 #include <QDirIterator>
+
+#include <random>
 
 using namespace rung;
 using namespace rung::network;
@@ -44,6 +49,46 @@ struct VigorVector {
     int count;
     const char *requestData;
     const char *replyData;
+};
+
+// A host (a line device at the port's Host Link defaults, 9600 bps 7E2) on a CPM1's peripheral
+// port, unit 0, as the spec's Host Link vectors address it; DM 0000 holds 1234.
+const QByteArray kHostAndCpm1 = R"({
+    "stations": [{"name": "plc", "program": "c.il", "model": "CPM1-20CDR",
+                  "ports": {"PERIPHERAL": {"application": "host-link", "station": 0}}}],
+    "devices": [{"name": "host", "kind": "line", "baud": 9600, "frame": "7E2"}],
+    "wires": [["plc/PERIPHERAL", "host"]]
+})";
+const std::map<QString, QString> kCpm1 = {
+    {QStringLiteral("c.il"),
+     QStringLiteral("; target: cpm1\nLD 253.13\nMOV(21) #1234 DM0000\nEND(01)\n")}};
+
+// The frames a run of kHostAndCpm1 carries when the host sends `command` at 100 ms: the
+// command, then the PLC's answer (if any) within 100 ms, each decoded.
+std::vector<DecodedFrame> hostLinkExchange(const QByteArray &command,
+                                           std::vector<TrafficRecord> *records = nullptr) {
+    NetRun r = runNetwork(kHostAndCpm1, kCpm1);
+    EXPECT_TRUE(r.net) << r.error.toStdString();
+    if (!r.net)
+        return {};
+    EXPECT_TRUE(r.net->runUntil(100'000));
+    r.net->inject(r.net->endpoint(QStringLiteral("host")), command);
+    EXPECT_TRUE(r.net->runUntil(200'000));
+    TrafficDecoder decoder(*r.net);
+    std::vector<DecodedFrame> out;
+    for (const TrafficRecord &t : r.records)
+        out.push_back(decoder.decode(t));
+    if (records)
+        *records = r.records;
+    return out;
+}
+
+struct HostLinkVector {
+    const char *command;
+    const char *commandText;
+    const char *address;
+    int count;
+    const char *data;
 };
 
 std::vector<QString> exampleNetworks() {
@@ -216,6 +261,285 @@ TEST(TrafficDecode, ModbusRequestsRepliesAndExceptions) {
         SCOPED_TRACE(garbled.toHex(' ').toStdString());
         EXPECT_FALSE(decoder.decode(transmission("master/CP2", garbled)).problem.isEmpty());
         EXPECT_FALSE(decoder.decode(transmission("s2/CP2", garbled)).problem.isEmpty());
+    }
+}
+
+// ../shared/spec/protocols.md, "Omron CPM1 Host Link (C-mode)": its test vectors (unit 00)
+// verbatim, each read as the command it is, for the CPM1 on the wire, with the address as the
+// CPM1's device beside the four digits on the wire.
+TEST(TrafficDecode, HostLinkVectorsOfTheSpec) {
+    const NetRun run = runNetwork(kHostAndCpm1, kCpm1);
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    TrafficDecoder decoder(*run.net);
+    const HostLinkVector vectors[] = {
+        {"@00RD0000000157*\r", "RD read DM words", "DM 0000 (0000)", 1, ""},
+        {"@00WD0100123456*\r", "WD write DM words", "DM 0100 (0100)", 1, "1234"},
+        {"@00RR0000000242*\r", "RR read IR/SR words", "000 (0000)", 2, ""},
+        {"@00WR001000FF44*\r", "WR write IR/SR words", "010 (0010)", 1, "00FF"},
+        {"@00RC0000000253*\r", "RC read timer/counter PVs", "TIM 000 (0000)", 2, ""},
+        {"@00MS5E*\r", "MS read status", "", -1, ""},
+        {"@00SC0050*\r", "SC change mode", "", -1, "00 PROGRAM"},
+        {"@00SC0252*\r", "SC change mode", "", -1, "02 MONITOR"},
+        {"@00SC0353*\r", "SC change mode", "", -1, "03 RUN"},
+        {"@00MM40*\r", "MM read model", "", -1, ""},
+        {"@00KSCIO 0010003C*\r", "KS force set", "010.00 (CIO 001000)", -1, ""},
+    };
+    for (const HostLinkVector &v : vectors) {
+        SCOPED_TRACE(v.command);
+        const DecodedFrame f = decoder.decode(transmission("host", v.command));
+        EXPECT_EQ(f.kind, DecodedFrame::Kind::Request);
+        EXPECT_EQ(f.protocol.toStdString(), "Host Link");
+        EXPECT_EQ(f.receiver.toStdString(), "plc/PERIPHERAL");
+        EXPECT_EQ(f.station, 0);
+        EXPECT_EQ(f.command, QByteArray(v.command).at(3) << 8 | QByteArray(v.command).at(4));
+        EXPECT_EQ(f.commandText.toStdString(), v.commandText);
+        EXPECT_EQ(f.address.toStdString(), v.address);
+        EXPECT_EQ(f.count, v.count);
+        EXPECT_EQ(f.data.toStdString(), v.data);
+        EXPECT_EQ(f.problem.toStdString(), "");
+        EXPECT_EQ(f.errorCode, -1);
+        EXPECT_FALSE(f.previousUnanswered);
+        decoder.reset(); // no reply here: the next vector is not a request after a silent one
+    }
+    // Unit 01 is not on the wire: the command reads, but nobody is there to answer it.
+    const DecodedFrame elsewhere = decoder.decode(transmission("host", "@01RD0000000156*\r"));
+    EXPECT_EQ(elsewhere.protocol.toStdString(), "Host Link");
+    EXPECT_EQ(elsewhere.station, 1);
+    EXPECT_EQ(elsewhere.receiver.toStdString(), "");
+    EXPECT_EQ(elsewhere.problem.toStdString(), "");
+}
+
+// The spec's read of DM 0000 on a running CPM1 (MOV #1234 DM0000): the PLC's reply read
+// against it, with the request's address and the word it carries.
+TEST(TrafficDecode, AHostLinkReadOfDmAndItsReplyOnARun) {
+    std::vector<TrafficRecord> records;
+    const std::vector<DecodedFrame> f = hostLinkExchange("@00RD0000000157*\r", &records);
+    ASSERT_EQ(f.size(), 2u);
+    EXPECT_EQ(records[1].bytes, QByteArray("@00RD00123452*\r"));
+    const DecodedFrame &reply = f[1];
+    EXPECT_EQ(reply.kind, DecodedFrame::Kind::Reply);
+    EXPECT_EQ(reply.protocol.toStdString(), "Host Link");
+    EXPECT_EQ(reply.receiver.toStdString(), "host");
+    EXPECT_EQ(reply.station, 0);
+    EXPECT_EQ(reply.commandText.toStdString(), "RD read DM words");
+    EXPECT_EQ(reply.address.toStdString(), "DM 0000 (0000)");
+    EXPECT_EQ(reply.count, 1);
+    EXPECT_EQ(reply.data.toStdString(), "1234");
+    EXPECT_EQ(reply.errorCode, -1);
+    EXPECT_EQ(reply.problem.toStdString(), "");
+}
+
+// W353: a write in RUN is refused with end code 01; the reply says the PLC's code and its
+// text (the PLC's answer, not a fault of the frame).
+TEST(TrafficDecode, AHostLinkWriteRefusedInRunSaysEndCode01) {
+    std::vector<TrafficRecord> records;
+    const std::vector<DecodedFrame> f = hostLinkExchange("@00WD0100123456*\r", &records);
+    ASSERT_EQ(f.size(), 2u);
+    EXPECT_EQ(records[1].bytes, QByteArray("@00WD0152*\r"));
+    EXPECT_EQ(f[0].problem.toStdString(), "");
+    EXPECT_EQ(f[0].data.toStdString(), "1234");
+    const DecodedFrame &reply = f[1];
+    EXPECT_EQ(reply.kind, DecodedFrame::Kind::Reply);
+    EXPECT_EQ(reply.commandText.toStdString(), "WD write DM words");
+    EXPECT_EQ(reply.address.toStdString(), "DM 0100 (0100)");
+    EXPECT_EQ(reply.errorCode, 0x01);
+    EXPECT_EQ(reply.errorText, comms::hostlink::endCodeText(0x01));
+    EXPECT_NE(reply.errorText.indexOf(QStringLiteral("end code 01")), -1)
+        << reply.errorText.toStdString();
+    EXPECT_EQ(reply.problem.toStdString(), "");
+    EXPECT_TRUE(reply.failed());
+}
+
+// The spec's read of DM 0000 with its FCS spoiled (58 for 57): the command says both FCSs,
+// and the PLC's answer, end code 13, is read against it.
+TEST(TrafficDecode, AHostLinkCommandWithAWrongFcsAndThePlcsEndCode13) {
+    std::vector<TrafficRecord> records;
+    const std::vector<DecodedFrame> f = hostLinkExchange("@00RD0000000158*\r", &records);
+    ASSERT_EQ(f.size(), 2u);
+    EXPECT_EQ(f[0].problem.toStdString(),
+              "wrong FCS (received 58, computed 57): the PLC answers end code 13");
+    EXPECT_EQ(f[0].receiver.toStdString(), "plc/PERIPHERAL");
+    EXPECT_EQ(f[0].commandText.toStdString(), "RD read DM words");
+    EXPECT_EQ(records[1].bytes.left(7), QByteArray("@00RD13"));
+    EXPECT_EQ(f[1].errorCode, 0x13);
+    EXPECT_EQ(f[1].errorText, comms::hostlink::endCodeText(0x13));
+    EXPECT_EQ(f[1].problem.toStdString(), "");
+}
+
+// The cpm1-host-link example: the peripheral port is on no wire of the file, and its bridge's
+// real line joins it when the bridge opens, after the decoder learnt the wiring (the IDE's
+// Traffic view learns it when the session is built). The decoder knows the line and its wire
+// from the file's bridges: the host's read through the line is a Host Link command, the
+// PLC's answer its reply.
+TEST(TrafficDecode, TheCpm1ExamplesBridgedPortIsDecodedThoughTheLineOpensLater) {
+    NetRun run =
+        runNetwork({}, {}, {},
+                   QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/cpm1-host-link/"
+                                                  "cpm1-host-link.rungnet"));
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    TrafficDecoder decoder(*run.net);
+    QString error;
+    std::shared_ptr<comms::Transport> pty = comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    BridgeEndpoint *line =
+        attachBridgeLine(*run.net, QStringLiteral("cpm1/PERIPHERAL"), pty, &error);
+    ASSERT_NE(line, nullptr) << error.toStdString();
+    ASSERT_TRUE(run.net->runUntil(100'000));
+    run.net->inject(line, "@00RD0000000157*\r");
+    ASSERT_TRUE(run.net->runUntil(200'000));
+    ASSERT_EQ(run.records.size(), 2u);
+    const DecodedFrame request = decoder.decode(run.records[0]);
+    EXPECT_EQ(run.records[0].sender.toStdString(), "bridge:cpm1/PERIPHERAL");
+    EXPECT_EQ(request.kind, DecodedFrame::Kind::Request);
+    EXPECT_EQ(request.protocol.toStdString(), "Host Link");
+    EXPECT_EQ(request.receiver.toStdString(), "cpm1/PERIPHERAL");
+    EXPECT_EQ(request.commandText.toStdString(), "RD read DM words");
+    EXPECT_EQ(request.address.toStdString(), "DM 0000 (0000)");
+    const DecodedFrame reply = decoder.decode(run.records[1]);
+    EXPECT_EQ(reply.kind, DecodedFrame::Kind::Reply);
+    EXPECT_EQ(reply.receiver.toStdString(), "bridge:cpm1/PERIPHERAL");
+    EXPECT_EQ(reply.data.toStdString(), "0000"); // the batch count after a start
+    EXPECT_EQ(reply.problem.toStdString(), "");
+    EXPECT_EQ(decoder.ownerOf(QStringLiteral("bridge:cpm1/PERIPHERAL")).toStdString(),
+              "bridge:cpm1/PERIPHERAL");
+}
+
+// Frames cut short (no "*" CR) and bytes that are no frame: what is wrong, never a crash; the
+// host's text that is no command stays text.
+TEST(TrafficDecode, AHostLinkFrameCutShortOrNoFrameSaysWhatIsWrong) {
+    const NetRun run = runNetwork(kHostAndCpm1, kCpm1);
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    TrafficDecoder decoder(*run.net);
+    const DecodedFrame cut = decoder.decode(transmission("host", "@00RD00000001"));
+    EXPECT_EQ(cut.protocol.toStdString(), "Host Link");
+    EXPECT_NE(cut.problem.indexOf(QStringLiteral("stops after 13 byte")), -1)
+        << cut.problem.toStdString();
+    EXPECT_EQ(cut.station, 0);
+    EXPECT_EQ(cut.receiver.toStdString(), "plc/PERIPHERAL");
+    const DecodedFrame noEnd = decoder.decode(transmission("host", "@00RD0000000157"));
+    EXPECT_NE(noEnd.problem.indexOf(QStringLiteral("stops after 15 byte")), -1)
+        << noEnd.problem.toStdString();
+    // The PLC's reply cut short, and bytes from it that are no frame.
+    decoder.decode(transmission("host", "@00RD0000000157*\r"));
+    const DecodedFrame cutReply = decoder.decode(transmission("plc/PERIPHERAL", "@00RD0012"));
+    EXPECT_EQ(cutReply.kind, DecodedFrame::Kind::Reply);
+    EXPECT_NE(cutReply.problem.indexOf(QStringLiteral("stops after 9 byte")), -1)
+        << cutReply.problem.toStdString();
+    decoder.decode(transmission("host", "@00RD0000000157*\r"));
+    const DecodedFrame noise = decoder.decode(transmission("plc/PERIPHERAL", "\x13\xFF\r"));
+    EXPECT_NE(noise.problem.indexOf(QStringLiteral("not a Host Link answer")), -1)
+        << noise.problem.toStdString();
+    // A reply whose FCS is wrong.
+    decoder.decode(transmission("host", "@00RD0000000157*\r"));
+    const DecodedFrame badFcs = decoder.decode(transmission("plc/PERIPHERAL", "@00RD00123453*\r"));
+    EXPECT_NE(badFcs.problem.indexOf(QStringLiteral("received 53, computed 52")), -1)
+        << badFcs.problem.toStdString();
+    // Text from the host that is no command is the host's text.
+    const DecodedFrame text = decoder.decode(transmission("host", "HELLO\r"));
+    EXPECT_EQ(text.kind, DecodedFrame::Kind::Raw);
+    EXPECT_EQ(text.data.toStdString(), "HELLO\\r");
+}
+
+// A command the PLC does not have ("XX") gets IC: no end code, the reply says so.
+TEST(TrafficDecode, AHostLinkCommandThePlcDoesNotKnowIsAnsweredIc) {
+    QByteArray command = "@00XX";
+    command += comms::hostlink::fcs(command) + "*\r";
+    std::vector<TrafficRecord> records;
+    const std::vector<DecodedFrame> f = hostLinkExchange(command, &records);
+    ASSERT_EQ(f.size(), 2u);
+    EXPECT_EQ(f[0].commandText.toStdString(), "XX unknown command");
+    EXPECT_EQ(records[1].bytes.left(5), QByteArray("@00IC"));
+    EXPECT_EQ(f[1].commandText.toStdString(), "IC command not recognised");
+    EXPECT_EQ(f[1].errorCode, -1);
+    EXPECT_NE(f[1].problem.indexOf(QStringLiteral("(IC)")), -1) << f[1].problem.toStdString();
+}
+
+// W353: a frame over 131 characters goes in parts; the other side answers a lone CR after
+// each part but the last. A read of 40 DM words (a reply of 30 then 10 words) and a write of
+// 40 (a command in two parts), as the product's codec writes them: every part is read, the
+// last with the whole frame's data.
+TEST(TrafficDecode, HostLinkFramesInPartsAndTheirDelimiters) {
+    namespace hl = comms::hostlink;
+    const NetRun run = runNetwork(kHostAndCpm1, kCpm1);
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    TrafficDecoder decoder(*run.net);
+    std::vector<std::uint16_t> words;
+    QByteArray text;
+    QStringList expected;
+    for (int i = 0; i < 40; ++i) {
+        words.push_back(std::uint16_t(0x1000 + i));
+        text += QByteArray::number(0x1000 + i, 16).toUpper();
+        expected << QString::number(0x1000 + i, 16).toUpper();
+    }
+    const hl::Frame read = hl::readCommand(0, model::ProtocolSpace::HostLinkDm, 0, 40);
+    ASSERT_EQ(hl::encode(read).size(), 1);
+    const QList<QByteArray> replyParts = hl::encode({0, "RD", 0, text});
+    ASSERT_EQ(replyParts.size(), 2);
+    EXPECT_EQ(decoder.decode(transmission("host", hl::encode(read).front())).count, 40);
+    const DecodedFrame first = decoder.decode(transmission("plc/PERIPHERAL", replyParts[0]));
+    EXPECT_EQ(first.kind, DecodedFrame::Kind::Reply);
+    EXPECT_EQ(first.problem.toStdString(), "");
+    EXPECT_NE(first.data.indexOf(QStringLiteral("part 1")), -1) << first.data.toStdString();
+    const DecodedFrame more = decoder.decode(transmission("host", "\r"));
+    EXPECT_EQ(more.protocol.toStdString(), "Host Link");
+    EXPECT_EQ(more.commandText.toStdString(), "RD read DM words");
+    EXPECT_EQ(more.data.toStdString(), "CR: the next part, please");
+    EXPECT_EQ(more.problem.toStdString(), "");
+    EXPECT_FALSE(more.previousUnanswered);
+    const DecodedFrame last = decoder.decode(transmission("plc/PERIPHERAL", replyParts[1]));
+    EXPECT_EQ(last.problem.toStdString(), "");
+    EXPECT_EQ(last.address.toStdString(), "DM 0000 (0000)");
+    EXPECT_EQ(last.data, expected.join(u' '));
+
+    const QList<QByteArray> commandParts =
+        hl::encode(hl::writeCommand(0, model::ProtocolSpace::HostLinkDm, 100, words));
+    ASSERT_EQ(commandParts.size(), 2);
+    const DecodedFrame part1 = decoder.decode(transmission("host", commandParts[0]));
+    EXPECT_EQ(part1.commandText.toStdString(), "WD write DM words");
+    EXPECT_EQ(part1.problem.toStdString(), "");
+    EXPECT_FALSE(part1.previousUnanswered) << "the read was answered";
+    EXPECT_NE(part1.data.indexOf(QStringLiteral("part 1")), -1) << part1.data.toStdString();
+    const DecodedFrame delimiter = decoder.decode(transmission("plc/PERIPHERAL", "\r"));
+    EXPECT_EQ(delimiter.kind, DecodedFrame::Kind::Reply);
+    EXPECT_EQ(delimiter.data.toStdString(), "CR: the next part, please");
+    EXPECT_EQ(delimiter.receiver.toStdString(), "host");
+    const DecodedFrame part2 = decoder.decode(transmission("host", commandParts[1]));
+    EXPECT_EQ(part2.problem.toStdString(), "");
+    EXPECT_EQ(part2.address.toStdString(), "DM 0100 (0100)");
+    EXPECT_EQ(part2.count, 40);
+    EXPECT_EQ(part2.data, expected.join(u' '));
+    const DecodedFrame refused = decoder.decode(transmission("plc/PERIPHERAL", "@00WD0152*\r"));
+    EXPECT_EQ(refused.errorCode, 0x01);
+    EXPECT_EQ(refused.count, 40);
+}
+
+// Whatever comes on a Host Link wire, from the host or the PLC, in whatever order: every
+// prefix of the spec's vectors and of their replies, and bytes made of the characters Host
+// Link frames are built of, are read as something, never a crash; a cut vector says so.
+TEST(TrafficDecode, AnyBytesOnAHostLinkWireAreReadWithoutACrash) {
+    const NetRun run = runNetwork(kHostAndCpm1, kCpm1);
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    TrafficDecoder decoder(*run.net);
+    const QByteArray frames[] = {"@00RD0000000157*\r", "@00RD00123452*\r",     "@00WD0100123456*\r",
+                                 "@00WD0152*\r",       "@00KSCIO 0010003C*\r", "@00MS5E*\r"};
+    for (const QByteArray &frame : frames)
+        for (qsizetype n = 1; n <= frame.size(); ++n)
+            for (const char *sender : {"host", "plc/PERIPHERAL"}) {
+                const DecodedFrame f = decoder.decode(transmission(sender, frame.first(n)));
+                EXPECT_FALSE(f.protocol.isEmpty()) << sender << ' ' << frame.first(n).data();
+                if (n < frame.size() - 1 && frame.front() == '@' && sender[0] == 'h')
+                    EXPECT_TRUE(f.failed()) << frame.first(n).data();
+            }
+    std::mt19937 random(30);
+    const QByteArray alphabet = "@*\r0123456789ABCDEFRDWMSCKI ";
+    for (int i = 0; i < 3000; ++i) {
+        QByteArray bytes;
+        const int size = 1 + int(random() % 300);
+        for (int c = 0; c < size; ++c)
+            bytes += alphabet[qsizetype(random() % std::uint32_t(alphabet.size()))];
+        const DecodedFrame f =
+            decoder.decode(transmission(random() % 2 ? "host" : "plc/PERIPHERAL", bytes));
+        EXPECT_FALSE(f.protocol.isEmpty()) << bytes.data();
     }
 }
 
