@@ -20,6 +20,7 @@
 #include <QSaveFile>
 #include <QScrollBar>
 #include <QSortFilterProxyModel>
+#include <QStyle>
 #include <QTableView>
 #include <QTextStream>
 #include <QVBoxLayout>
@@ -113,6 +114,10 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
     header->setSectionResizeMode(QHeaderView::Interactive);
     header->setStretchLastSection(true);
     header->setHighlightSections(false);
+    connect(header, &QHeaderView::sectionResized, this, [this](int column) {
+        if (!m_sizing && column < int(m_byHand.size()))
+            m_byHand[std::size_t(column)] = true;
+    });
     // The table samples its first rows for the columns' widths (fitColumns); the long
     // texts (data, error, note) stop at a width that leaves the bytes in sight.
     m_table->horizontalHeader()->setResizeContentsPrecision(200);
@@ -132,11 +137,13 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
     connect(m_errorsOnly, &QCheckBox::toggled, this, &NetworkTrafficView::chooserChanged);
     connect(m_save, &QPushButton::clicked, this, &NetworkTrafficView::save);
     connect(m_model, &NetworkTrafficModel::rowsDropped, this, &NetworkTrafficView::updateStatus);
-    connect(m_filter, &QAbstractItemModel::rowsInserted, this, [this] {
-        updateStatus();
-        if (m_follow)
-            m_table->scrollToBottom();
-    });
+    connect(m_filter, &QAbstractItemModel::rowsInserted, this,
+            [this](const QModelIndex &, int first, int last) {
+                growColumns(first, last);
+                updateStatus();
+                if (m_follow)
+                    m_table->scrollToBottom();
+            });
     connect(m_filter, &QAbstractItemModel::modelReset, this, &NetworkTrafficView::updateStatus);
     connect(m_filter, &QAbstractItemModel::rowsRemoved, this, &NetworkTrafficView::updateStatus);
     connect(m_table->verticalScrollBar(), &QScrollBar::valueChanged, this,
@@ -210,17 +217,59 @@ void NetworkTrafficView::append(std::vector<network::TrafficRecord> records) {
         fitColumns();
 }
 
+int NetworkTrafficView::columnCap(int column) const {
+    const int em = m_table->fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    switch (column) {
+    case NetworkTrafficModel::Sender:
+    case NetworkTrafficModel::Receiver:
+    case NetworkTrafficModel::Address:
+        return 14 * em;
+    case NetworkTrafficModel::Command:
+        return 20 * em;
+    case NetworkTrafficModel::Data:
+    case NetworkTrafficModel::Note:
+        return 12 * em;
+    case NetworkTrafficModel::Error: // what went wrong: readable before the bytes
+        return 24 * em;
+    default:
+        return 1 << 20;
+    }
+}
+
 void NetworkTrafficView::fitColumns() {
+    m_sizing = true;
     m_table->resizeColumnsToContents();
     const int em = m_table->fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    for (int column :
-         {NetworkTrafficModel::Sender, NetworkTrafficModel::Receiver, NetworkTrafficModel::Address})
-        m_table->setColumnWidth(column, std::min(m_table->columnWidth(column), 14 * em));
-    m_table->setColumnWidth(NetworkTrafficModel::Command,
-                            std::min(m_table->columnWidth(NetworkTrafficModel::Command), 20 * em));
+    for (int column = 0; column < NetworkTrafficModel::Bytes; ++column)
+        m_table->setColumnWidth(column, std::min(m_table->columnWidth(column), columnCap(column)));
     for (int column :
          {NetworkTrafficModel::Data, NetworkTrafficModel::Error, NetworkTrafficModel::Note})
-        m_table->setColumnWidth(column, std::clamp(m_table->columnWidth(column), 5 * em, 12 * em));
+        m_table->setColumnWidth(column, std::max(m_table->columnWidth(column), 5 * em));
+    m_byHand.assign(NetworkTrafficModel::ColumnCount, false);
+    m_sizing = false;
+}
+
+void NetworkTrafficView::growColumns(int first, int last) {
+    if (m_byHand.empty())
+        return;
+    // A long run's batch may hold thousands of rows: the last ones are as wide as any (the
+    // time grows, the texts repeat), and measuring them all would cost the UI its frames.
+    first = std::max(first, last - 63);
+    const QFontMetrics metrics = m_table->fontMetrics();
+    const int padding = 2 * m_table->style()->pixelMetric(QStyle::PM_FocusFrameHMargin) + 8;
+    m_sizing = true;
+    for (int column = 0; column < NetworkTrafficModel::Bytes; ++column) {
+        if (m_byHand[std::size_t(column)] || m_table->isColumnHidden(column))
+            continue;
+        int widest = 0;
+        for (int row = first; row <= last; ++row)
+            widest = std::max(
+                widest, metrics.horizontalAdvance(m_filter->index(row, column).data().toString()));
+        const int wanted = std::min(widest + padding, columnCap(column));
+        if (wanted > m_table->columnWidth(column))
+            m_table->setColumnWidth(column, wanted);
+    }
+    m_sizing = false;
 }
 
 void NetworkTrafficView::clear() {

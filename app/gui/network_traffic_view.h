@@ -65,6 +65,10 @@ private:
     void save();
     void retranslate();
     void fitColumns();
+    // Widens the columns the user has not sized by hand to the texts of the rows first..last
+    // of the table, up to each column's cap; never narrows one.
+    void growColumns(int first, int last);
+    int columnCap(int column) const;
     void updateStatus();
     void chooserChanged();
 
@@ -79,7 +83,9 @@ private:
     QPushButton *m_save;
     QTableView *m_table;
     QString m_file;
-    bool m_follow = true; // keep the newest frame in sight while the user is at the bottom
+    bool m_follow = true;       // keep the newest frame in sight while the user is at the bottom
+    bool m_sizing = false;      // the view itself sets a column's width
+    std::vector<bool> m_byHand; // columns the user sized: the view leaves them
 };
 
 } // namespace rung::app

@@ -19,6 +19,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFile>
+#include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLabel>
 #include <QSignalSpy>
@@ -455,4 +456,41 @@ TEST(NetworkTrafficView, MarksTheRequestsThatGotNoReply) {
     for (int row = 0; row < shown->rowCount(); ++row)
         EXPECT_EQ(shown->index(row, NetworkTrafficModel::Error).data().toString().toStdString(),
                   "");
+}
+
+// The columns are sized on the first rows; a later frame with a longer text (here the first
+// "no reply" error, long after the first request) widens its column so the text reads, up to
+// the column's cap, and a column the user sized by hand stays as the user left it.
+TEST(NetworkTrafficView, AColumnWidensForALongerTextLaterUnlessSizedByHand) {
+    network::FaultDescription silent;
+    silent.kind = network::FaultDescription::Kind::Silent;
+    silent.station = QStringLiteral("s1");
+    TrafficRun run = runExample(QStringLiteral("modbus/modbus.rungnet"), 2000, silent);
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    ASSERT_GT(run.records.size(), 20u);
+    NetworkTrafficView view;
+    view.resize(1300, 500);
+    view.setNetwork(*run.net);
+    view.append({run.records.front()}); // a request: no error yet
+    QTableView *table = view.table();
+    QAbstractItemModel *shown = table->model();
+    ASSERT_EQ(shown->rowCount(), 1);
+    ASSERT_TRUE(shown->index(0, NetworkTrafficModel::Error).data().toString().isEmpty());
+    const int before = table->columnWidth(NetworkTrafficModel::Error);
+    const QString noReply = network::TrafficDecoder::noReplyText();
+    const int needed = table->fontMetrics().horizontalAdvance(noReply);
+    ASSERT_GT(needed, before); // else the test shows nothing
+
+    view.append({run.records.begin() + 1, run.records.begin() + 10});
+    bool seen = false;
+    for (int row = 0; row < shown->rowCount(); ++row)
+        seen = seen || shown->index(row, NetworkTrafficModel::Error).data().toString() == noReply;
+    ASSERT_TRUE(seen);
+    const int em = table->fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    EXPECT_GE(table->columnWidth(NetworkTrafficModel::Error), std::min(needed, 24 * em));
+
+    // Sized by hand: the view leaves it, though wider texts come.
+    table->horizontalHeader()->resizeSection(NetworkTrafficModel::Error, before);
+    view.append({run.records.begin() + 10, run.records.end()});
+    EXPECT_EQ(table->columnWidth(NetworkTrafficModel::Error), before);
 }
