@@ -148,7 +148,8 @@ void NetworkCanvas::relayout() {
     const double titleWidth = fmBold.horizontalAdvance(l.title.front());
     top += line * 1.6;
     if (!l.comment.isEmpty()) {
-        // Wrapped to the boxes' width (at least 700), whole: the user wrote it.
+        // Wrapped, whole (the user wrote it), to the view's width or the boxes', whichever is
+        // wider, so that it reads without scrolling sideways where the boxes do.
         double boxesWidth = 0;
         for (const auto &box : l.boxes) {
             double width = kNetMinBoxWidth;
@@ -156,7 +157,8 @@ void NetworkCanvas::relayout() {
                 width = std::max(width, fmBold.horizontalAdvance(h) + 2 * kNetPad);
             boxesWidth += width + kNetGap;
         }
-        const double width = std::max(700.0, boxesWidth);
+        const double width =
+            std::max({320.0, boxesWidth - kNetGap, m_view->textWidth() - 2 * kNetMargin});
         const QRectF bounds =
             fm.boundingRect(QRectF(kNetMargin, top, width, 1e6), Qt::TextWordWrap, l.comment);
         l.commentRect = QRectF(kNetMargin, top, width, bounds.height());

@@ -16,6 +16,8 @@
 #include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
+#include <QResizeEvent>
+#include <QScrollBar>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -44,6 +46,17 @@ NetworkView::NetworkView(NetworkDocument *document, QWidget *parent)
     });
     connect(document, &NetworkDocument::filePathChanged, this, [this] { m_canvas->relayout(); });
     m_canvas->relayout();
+}
+
+double NetworkView::textWidth() const {
+    const int bar = verticalScrollBar()->sizeHint().width();
+    return std::max(0, width() - 2 * frameWidth() - bar) / m_zoom;
+}
+
+void NetworkView::resizeEvent(QResizeEvent *event) {
+    QScrollArea::resizeEvent(event);
+    if (event->oldSize().width() != event->size().width())
+        m_canvas->relayout(); // the description wraps to the new width
 }
 
 QWidget *NetworkView::canvas() const {

@@ -31,6 +31,9 @@ public:
     QWidget *canvas() const;
 
     double zoom() const { return m_zoom; }
+    // The width the drawing may take without scrolling sideways, unzoomed: the view's, less a
+    // vertical scroll bar's whether shown or not (so that showing one never wraps anew).
+    double textWidth() const;
     void setZoom(double zoom); // 0.5 .. 3
     void zoomIn();
     void zoomOut();
@@ -75,6 +78,9 @@ public:
 
     // Quiet: a refused edit is only signalled (editRefused), no message box (tests, scripts).
     void setQuiet(bool quiet) { m_quiet = quiet; }
+
+protected:
+    void resizeEvent(QResizeEvent *event) override;
 
 signals:
     void stationActivated(const QString &name);

@@ -623,5 +623,27 @@ TEST(NetworkStationDialog, NeverOverwritesAFile) {
     EXPECT_TRUE(dialog.problemLabel()->text().contains(QStringLiteral("master.il")));
 }
 
+// A network's description wraps to the view's width: in the network window beside its docks
+// (about 640 px at 1366 x 768) the cpm1-host-link example's text was cut at 700 px, read
+// only by scrolling sideways; it reads whole now, and wraps anew when the view is widened.
+TEST(NetworkView, TheDescriptionWrapsToTheViewsWidth) {
+    NetworkDocument doc;
+    QString error;
+    ASSERT_TRUE(
+        doc.open(kNetExamples + QStringLiteral("/cpm1-host-link/cpm1-host-link.rungnet"), &error))
+        << error.toStdString();
+    ASSERT_TRUE(doc.description().comment.isString());
+    NetworkView view(&doc);
+    view.resize(640, 500);
+    view.show();
+    QCoreApplication::processEvents();
+    EXPECT_LE(view.canvas()->width(), view.viewport()->width());
+    const int narrowHeight = view.canvas()->height();
+    view.resize(1300, 500);
+    QCoreApplication::processEvents();
+    EXPECT_LE(view.canvas()->width(), view.viewport()->width());
+    EXPECT_LT(view.canvas()->height(), narrowHeight); // fewer lines of description
+}
+
 } // namespace
 } // namespace rung::app
