@@ -216,6 +216,31 @@ bool guardedSteps(const std::vector<Step> &steps) {
     return false;
 }
 
+// A run of contacts none of which is negated takes the op's P form (FastOp::SeriesStart2P ...).
+void positiveForms(std::vector<FastStep> &fast) {
+    struct Form {
+        FastOp op, positive;
+        std::size_t first, count; // the contacts of the run
+    };
+    constexpr Form kForms[] = {{FastOp::SeriesStart2, FastOp::SeriesStart2P, 0, 2},
+                               {FastOp::SeriesAnd2, FastOp::SeriesAnd2P, 0, 2},
+                               {FastOp::ParallelAnd, FastOp::ParallelAndP, 0, 2},
+                               {FastOp::SeriesOr, FastOp::SeriesOrP, 0, 2},
+                               {FastOp::BranchOut, FastOp::BranchOutP, 1, 1},
+                               {FastOp::BranchOutNot, FastOp::BranchOutNotP, 1, 1},
+                               {FastOp::SeriesStartOr, FastOp::SeriesStartOrP, 0, 3}};
+    for (std::size_t i = 0; i < fast.size(); ++i)
+        for (const Form &form : kForms) {
+            if (fast[i].op != form.op)
+                continue;
+            bool positive = i + form.first + form.count <= fast.size();
+            for (std::size_t k = form.first; positive && k < form.first + form.count; ++k)
+                positive = fast[i + k].flip == 0;
+            if (positive)
+                fast[i].op = form.positive;
+        }
+}
+
 } // namespace
 
 void buildFastSteps(Program &program) {
@@ -299,6 +324,7 @@ void buildFastSteps(Program &program) {
         program.fast.push_back(f);
     }
     fuse(program.fast);
+    positiveForms(program.fast);
     // fastElements is complete: its elements stay where they are for the program's life.
     for (FastStep &f : program.fast)
         if (f.op == FastOp::TimerK || f.op == FastOp::CounterK)

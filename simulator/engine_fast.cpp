@@ -204,6 +204,13 @@ template <bool Record, bool Forced, bool Deferred, bool Guarded> std::size_t Eng
                                             &&opLoadStartMoveConst16,
                                             &&opLoadStartOut,
                                             &&opSeriesStartOr,
+                                            &&opSeriesStart2P,
+                                            &&opSeriesAnd2P,
+                                            &&opParallelAndP,
+                                            &&opSeriesOrP,
+                                            &&opBranchOutP,
+                                            &&opBranchOutNotP,
+                                            &&opSeriesStartOrP,
                                             &&opStop};
     static_assert(std::size(table) == static_cast<std::size_t>(FastOp::Stop) + 1);
     const FastStep *f = fast;
@@ -384,75 +391,84 @@ opSlow : {
     f = fast + next;
     goto *table[static_cast<std::size_t>(f->op)];
 }
-opSeriesStart2 : {
-    const bool a = contact(f[0]) & RUNG_GATE;
-    bsp = 0;
-    psp = 0;
-    if constexpr (Record)
-        flow[at()] = a;
-    acc = a & contact(f[1]);
-    ++f;
-    RUNG_NEXT();
-}
-opSeriesStartOr : {
-    const bool a = contact(f[0]) & RUNG_GATE;
-    const bool series = a & contact(f[1]);
-    bsp = 0;
-    psp = 0;
-    if constexpr (Record) {
-        flow[at()] = a;
-        flow[at() + 1] = series;
-    }
-    acc = series | (contact(f[2]) & RUNG_GATE);
-    f += 2;
-    RUNG_NEXT();
-}
-opSeriesAnd2:
-    acc = acc & contact(f[0]);
-    if constexpr (Record)
-        flow[at()] = acc;
-    acc = acc & contact(f[1]);
-    ++f;
-    RUNG_NEXT();
-opParallelAnd : {
-    // The block stack's bound, as LD and ANB keep it (the compiler never comes near it).
-    if (Guarded && bsp >= kBlockStack) [[unlikely]] {
-        if (f->flip)
-            goto opLoadNot;
-        goto opLoad;
-    }
-    const bool a = contact(f[0]) & RUNG_GATE;
-    const bool branch = a | (contact(f[1]) & RUNG_GATE);
-    if constexpr (Record) {
-        flow[at()] = a;
-        flow[at() + 1] = branch;
-    }
-    acc = acc & branch;
-    f += 2;
-    RUNG_NEXT();
-}
-opSeriesOr : {
-    if (Guarded && bsp >= kBlockStack) [[unlikely]] {
-        if (f->flip)
-            goto opLoadNot;
-        goto opLoad;
-    }
-    const bool a = contact(f[0]) & RUNG_GATE;
-    const bool series = a & contact(f[1]);
-    if constexpr (Record) {
-        flow[at()] = a;
-        flow[at() + 1] = series;
-    }
-    acc = acc | series;
-    f += 2;
-    RUNG_NEXT();
-}
+// The runs of contacts as one op, each in two forms: C = contact, any contact negated or not,
+// and C = bitOf for the P ops, whose contacts are none negated (compile_fast.cpp): the negation
+// costs a load and an XOR a contact.
+#define RUNG_SERIES_START2(C)                                                                      \
+    do {                                                                                           \
+        const bool a = C(f[0]) & RUNG_GATE;                                                        \
+        bsp = 0;                                                                                   \
+        psp = 0;                                                                                   \
+        if constexpr (Record)                                                                      \
+            flow[at()] = a;                                                                        \
+        acc = a & C(f[1]);                                                                         \
+        ++f;                                                                                       \
+        RUNG_NEXT();                                                                               \
+    } while (false)
+#define RUNG_SERIES_START_OR(C)                                                                    \
+    do {                                                                                           \
+        const bool a = C(f[0]) & RUNG_GATE;                                                        \
+        const bool series = a & C(f[1]);                                                           \
+        bsp = 0;                                                                                   \
+        psp = 0;                                                                                   \
+        if constexpr (Record) {                                                                    \
+            flow[at()] = a;                                                                        \
+            flow[at() + 1] = series;                                                               \
+        }                                                                                          \
+        acc = series | (C(f[2]) & RUNG_GATE);                                                      \
+        f += 2;                                                                                    \
+        RUNG_NEXT();                                                                               \
+    } while (false)
+#define RUNG_SERIES_AND2(C)                                                                        \
+    do {                                                                                           \
+        acc = acc & C(f[0]);                                                                       \
+        if constexpr (Record)                                                                      \
+            flow[at()] = acc;                                                                      \
+        acc = acc & C(f[1]);                                                                       \
+        ++f;                                                                                       \
+        RUNG_NEXT();                                                                               \
+    } while (false)
+// The block stack's bound, as LD and ANB keep it (the compiler never comes near it).
+#define RUNG_PARALLEL_AND(C)                                                                       \
+    do {                                                                                           \
+        if (Guarded && bsp >= kBlockStack) [[unlikely]] {                                          \
+            if (f->flip)                                                                           \
+                goto opLoadNot;                                                                    \
+            goto opLoad;                                                                           \
+        }                                                                                          \
+        const bool a = C(f[0]) & RUNG_GATE;                                                        \
+        const bool branch = a | (C(f[1]) & RUNG_GATE);                                             \
+        if constexpr (Record) {                                                                    \
+            flow[at()] = a;                                                                        \
+            flow[at() + 1] = branch;                                                               \
+        }                                                                                          \
+        acc = acc & branch;                                                                        \
+        f += 2;                                                                                    \
+        RUNG_NEXT();                                                                               \
+    } while (false)
+#define RUNG_SERIES_OR(C)                                                                          \
+    do {                                                                                           \
+        if (Guarded && bsp >= kBlockStack) [[unlikely]] {                                          \
+            if (f->flip)                                                                           \
+                goto opLoadNot;                                                                    \
+            goto opLoad;                                                                           \
+        }                                                                                          \
+        const bool a = C(f[0]) & RUNG_GATE;                                                        \
+        const bool series = a & C(f[1]);                                                           \
+        if constexpr (Record) {                                                                    \
+            flow[at()] = a;                                                                        \
+            flow[at() + 1] = series;                                                               \
+        }                                                                                          \
+        acc = acc | series;                                                                        \
+        f += 2;                                                                                    \
+        RUNG_NEXT();                                                                               \
+    } while (false)
 // The coil's value; MPP gives acc back as it was.
-#define RUNG_BRANCH_OUT(negated)                                                                   \
+#define RUNG_BRANCH_OUT(C, negated)                                                                \
     do {                                                                                           \
         if (Guarded && psp >= kPushStack) [[unlikely]]                                             \
             goto opPush;                                                                           \
-        const bool on = acc & contact(f[1]);                                                       \
+        const bool on = acc & C(f[1]);                                                             \
         if constexpr (Record) {                                                                    \
             flow[at()] = acc;                                                                      \
             flow[at() + 1] = on;                                                                   \
@@ -462,10 +478,39 @@ opSeriesOr : {
         f += 3;                                                                                    \
         RUNG_NEXT();                                                                               \
     } while (false)
+opSeriesStart2:
+    RUNG_SERIES_START2(contact);
+opSeriesStart2P:
+    RUNG_SERIES_START2(bitOf);
+opSeriesStartOr:
+    RUNG_SERIES_START_OR(contact);
+opSeriesStartOrP:
+    RUNG_SERIES_START_OR(bitOf);
+opSeriesAnd2:
+    RUNG_SERIES_AND2(contact);
+opSeriesAnd2P:
+    RUNG_SERIES_AND2(bitOf);
+opParallelAnd:
+    RUNG_PARALLEL_AND(contact);
+opParallelAndP:
+    RUNG_PARALLEL_AND(bitOf);
+opSeriesOr:
+    RUNG_SERIES_OR(contact);
+opSeriesOrP:
+    RUNG_SERIES_OR(bitOf);
 opBranchOut:
-    RUNG_BRANCH_OUT(false);
+    RUNG_BRANCH_OUT(contact, false);
+opBranchOutP:
+    RUNG_BRANCH_OUT(bitOf, false);
 opBranchOutNot:
-    RUNG_BRANCH_OUT(true);
+    RUNG_BRANCH_OUT(contact, true);
+opBranchOutNotP:
+    RUNG_BRANCH_OUT(bitOf, true);
+#undef RUNG_SERIES_START2
+#undef RUNG_SERIES_START_OR
+#undef RUNG_SERIES_AND2
+#undef RUNG_PARALLEL_AND
+#undef RUNG_SERIES_OR
 #undef RUNG_BRANCH_OUT
 opTimerFull:
     timer(stepOf(*f), at(), acc, pass);

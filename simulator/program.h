@@ -308,7 +308,15 @@ enum class FastOp : std::uint8_t {
     LoadStartMoveConst16,
     LoadStartOut,
     SeriesStartOr, // LD / LDI a, AND / ANI b, OR / ORI c: a rung's start with a holding contact
-    Stop,          // after the last step: the list ended without END
+    // The runs above whose contacts are none negated (LD, AND, OR): no negation to apply.
+    SeriesStart2P,
+    SeriesAnd2P,
+    ParallelAndP,
+    SeriesOrP,
+    BranchOutP,
+    BranchOutNotP,
+    SeriesStartOrP,
+    Stop, // after the last step: the list ended without END
 };
 
 struct FastElement;

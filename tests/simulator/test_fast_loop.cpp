@@ -157,9 +157,13 @@ TEST(FastLoop, ARungStartWithAHoldingContactScansAsTheFullInterpreter) {
                        "OUT Y4\nRET\nEND");
     ASSERT_TRUE(sim.result.ok()) << sim.result.diagnostics.front().message.toStdString();
     const auto &fast = sim.result.program->fast;
+    // Three with a negated contact, two without (FastOp::SeriesStartOrP).
     EXPECT_EQ(std::count_if(fast.begin(), fast.end(),
                             [](const FastStep &f) { return f.op == FastOp::SeriesStartOr; }),
-              5);
+              3);
+    EXPECT_EQ(std::count_if(fast.begin(), fast.end(),
+                            [](const FastStep &f) { return f.op == FastOp::SeriesStartOrP; }),
+              2);
     std::vector<model::Address> inputs;
     for (int k = 0; k < 8; ++k)
         inputs.push_back(sim.at(QStringLiteral("X%1").arg(k).toLatin1().constData()));
@@ -211,7 +215,7 @@ TEST(FastLoop, ConstantTimersCountersAndOneContactRungsScanAsTheFullInterpreter)
     test::TableSim sim("LD X0\nMPS\nAND X1\nOUTN Y1\nMPP\nOUT Y2\nLD X2\nMPS\nANI X3\nOUT Y3\n"
                        "MPP\nOUTN Y4\nEND");
     ASSERT_TRUE(sim.result.ok());
-    EXPECT_EQ(sim.result.program->fast[1].op, FastOp::BranchOutNot);
+    EXPECT_EQ(sim.result.program->fast[1].op, FastOp::BranchOutNotP); // AND X1: not negated
     EXPECT_EQ(sim.result.program->fast[7].op, FastOp::BranchOut);
     std::vector<model::Address> in;
     for (const char *x : {"X0", "X1", "X2", "X3"})
@@ -262,6 +266,32 @@ TEST(FastLoop, TheStacksBoundsAreTestedOnlyWhereTheStepsOrderDoesNotBoundThem) {
     expectSameScans(jump.result.program, in, {jump.at("Y1")}, 200, 29, 2);
     expectSameScans(many.result.program, in, {many.at("M3")}, 200, 31, 2);
     expectSameScans(few.result.program, in, {few.at("M3")}, 200, 37, 2);
+}
+
+// Each run of contacts in its P form (no contact negated: the loop applies no negation) beside
+// the same run with a negated contact: the forms the compiler chose, and the same scans as the
+// full interpreter.
+TEST(FastLoop, RunsOfContactsNoneNegatedScanAsTheFullInterpreter) {
+    test::TableSim sim(
+        "LD X0\nAND X1\nOUT Y0\nLD X2\nANI X3\nOUT Y1\n"
+        "LD X0\nAND X1\nAND X2\nAND X3\nOUT Y2\nLD X0\nAND X1\nANI X2\nAND X3\nOUT Y3\n"
+        "LD X0\nLD X1\nOR X2\nANB\nOUT Y4\nLD X0\nLDI X1\nOR X2\nANB\nOUT Y5\n"
+        "LD X0\nLD X1\nAND X2\nORB\nOUT Y6\nLD X0\nLD X1\nANI X2\nORB\nOUT Y7\n"
+        "LD X3\nMPS\nAND X1\nOUT M0\nMPP\nOUT M1\nLD X3\nMPS\nAND X2\nOUTN M2\nMPP\n"
+        "OUT M3\nLD X0\nAND X1\nOR M4\nOUT M4\nLD X0\nAND X2\nORI M5\nOUT M5\nEND");
+    ASSERT_TRUE(sim.result.ok()) << sim.result.diagnostics.front().message.toStdString();
+    std::vector<FastOp> ops;
+    for (const FastStep &f : sim.result.program->fast)
+        ops.push_back(f.op);
+    for (const FastOp op :
+         {FastOp::SeriesStart2P, FastOp::SeriesStart2, FastOp::SeriesAnd2P, FastOp::SeriesAnd2,
+          FastOp::ParallelAndP, FastOp::ParallelAnd, FastOp::SeriesOrP, FastOp::SeriesOr,
+          FastOp::BranchOutP, FastOp::BranchOutNotP, FastOp::SeriesStartOrP, FastOp::SeriesStartOr})
+        EXPECT_NE(std::find(ops.begin(), ops.end(), op), ops.end()) << int(op);
+    std::vector<model::Address> in;
+    for (const char *x : {"X0", "X1", "X2", "X3"})
+        in.push_back(sim.at(x));
+    expectSameScans(sim.result.program, in, {sim.at("Y4"), sim.at("M0")}, 400, 41, 2);
 }
 
 // An online edit lowers a running timer's K below the time it has counted: the lean timer stops
