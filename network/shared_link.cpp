@@ -118,24 +118,33 @@ const Resolved &resolved(const Member &m, SystemRole role) {
 
 void setBit(const Member &m, SystemRole role, int k, bool on) {
     const Resolved &r = resolved(m, role);
-    if (std::size_t(k) < r.bits.size() && r.bits[std::size_t(k)].valid())
+    if (std::size_t(k) < r.bits.size() && r.bits[std::size_t(k)].valid()) {
         m.station->engine().storeImageBit(r.bits[std::size_t(k)], on);
+        m.station->written().mark(std::size_t(r.bits[std::size_t(k)].word), 1);
+    }
 }
 
 void setWord(const Member &m, SystemRole role, int k, std::int32_t value) {
     const Resolved &r = resolved(m, role);
-    if (std::size_t(k) < r.words.size() && r.words[std::size_t(k)] >= 0)
+    if (std::size_t(k) < r.words.size() && r.words[std::size_t(k)] >= 0) {
         m.station->engine().storeImageWord(std::size_t(r.words[std::size_t(k)]), value, 16);
+        m.station->written().mark(std::size_t(r.words[std::size_t(k)]), 1);
+    }
 }
 
 void copy(const Member &from, const Member &to) {
     const simulator::Engine &src = from.station->engine();
     simulator::Engine &dst = to.station->engine();
     // The same devices in every station: the same indices, the target being one.
-    for (const Share::WordRun &run : from.share.wordRuns)
+    ImageWrites &written = to.station->written(); // for the network's history
+    for (const Share::WordRun &run : from.share.wordRuns) {
         dst.copyImageWords(src, run.first, run.count, run.width);
-    for (const auto &[word, mask] : from.share.bitWords)
+        written.mark(run.first, run.count);
+    }
+    for (const auto &[word, mask] : from.share.bitWords) {
         dst.copyImageBits(src, word, mask);
+        written.mark(word, 1);
+    }
 }
 
 // CPU Link: station 0 polls slaves 1..n in "instant interrupt way" (B-3-4): every network
