@@ -436,6 +436,49 @@ TEST(NetworkHistory, AWordAMasterWritesIntoASlaveIsRecordedAtTheInstantItWasWrit
     EXPECT_NE(before->value(d100), 1234);
 }
 
+// The CPU Link example: the master's VR1 (a command: the panel's knob) goes into its D0 by its
+// program, and the link's exchange writes it into D0 of both slaves, whose programs only show
+// it: recorded at the instant each slave received it.
+TEST(NetworkHistory, AWordALinkExchangeWritesIsRecordedAtTheInstantItArrived) {
+    std::unique_ptr<Network> net =
+        buildForHistory(kHistoryExamples + QStringLiteral("/cpu-link/cpu-link.rungnet"));
+    ASSERT_TRUE(net);
+    Station &master = *net->station(QStringLiteral("master"));
+    Station &slave1 = *net->station(QStringLiteral("slave1"));
+    const model::Address d0 = historyAddress(slave1, "D0");
+    const auto d0Word = static_cast<std::size_t>(slave1.engine().layout().word(d0));
+    const auto scanWrites = simulator::scanWrites(slave1.engine().program());
+    ASSERT_TRUE(scanWrites); // the slave's scan does not write it: the link does
+    for (const auto &[b, e] : *scanWrites)
+        ASSERT_FALSE(b <= d0Word && d0Word < e);
+    NetworkHistory history(NetworkHistory::Limits{256u << 20, 64});
+    history.start(*net);
+    std::vector<LiveInstant> live{captureLive(*net)};
+    qint64 arrived = -1;
+    for (int k = 1; k <= 200; ++k) {
+        if (k == 30 || k == 120) {
+            ASSERT_TRUE(master.engine().writeWord(historyAddress(master, "VR1"),
+                                                  k == 30 ? 555 : 77));
+            history.record(*net, true);
+            live.push_back(captureLive(*net));
+        }
+        net->runUntil(k * 10'000);
+        history.record(*net, false);
+        live.push_back(captureLive(*net));
+        if (arrived < 0 && slave1.engine().value(d0) == 555)
+            arrived = net->nowUs();
+    }
+    ASSERT_GT(arrived, 300'000);
+    EXPECT_EQ(slave1.engine().value(d0), 77);
+    expectHistoryShownAsLive(history, live);
+    expectWordValuesAsLive(history, live);
+    const auto then = history.stationAt(1, arrived);
+    const auto before = history.stationAt(1, arrived - 1);
+    ASSERT_TRUE(then && before);
+    EXPECT_EQ(then->value(d0), 555);
+    EXPECT_NE(before->value(d0), 555);
+}
+
 // A Host Link master (through a bridge, or here straight onto the port) forces a bit of the
 // CPM1 (KS, in MONITOR mode): the forced bit and its value are shown from that instant on,
 // though no command of the session's came between the slices.
