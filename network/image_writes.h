@@ -23,15 +23,26 @@ public:
     static constexpr std::size_t kBlockWords = 64;
 
     // [first, first + count) were written.
-    void mark(std::size_t first, std::size_t count) {
+    void mark(std::size_t first, std::size_t count) { addBlocks(m_blocks, first, count); }
+    // The blocks of a bitmap addBlocks made were written (a link's share: its runs and bits
+    // worked out once).
+    void mark(const std::vector<std::uint64_t> &blocks) {
+        if (blocks.size() > m_blocks.size())
+            m_blocks.resize(blocks.size(), 0);
+        for (std::size_t i = 0; i < blocks.size(); ++i)
+            m_blocks[i] |= blocks[i];
+    }
+    // The blocks of [first, first + count) set in `blocks` (a bit a block, as kept here).
+    static void addBlocks(std::vector<std::uint64_t> &blocks, std::size_t first,
+                          std::size_t count) {
         if (count == 0)
             return;
         const std::size_t from = first / kBlockWords;
         const std::size_t to = (first + count - 1) / kBlockWords;
-        if (to / 64 >= m_blocks.size())
-            m_blocks.resize(to / 64 + 1, 0);
+        if (to / 64 >= blocks.size())
+            blocks.resize(to / 64 + 1, 0);
         for (std::size_t b = from; b <= to; ++b)
-            m_blocks[b / 64] |= std::uint64_t(1) << (b % 64);
+            blocks[b / 64] |= std::uint64_t(1) << (b % 64);
     }
     // Any word may have been written; `forces`: forced bits too (a slave's force or release).
     void markAll(bool forces) {

@@ -29,6 +29,9 @@ struct Share {
     };
     std::vector<WordRun> wordRuns;
     std::vector<std::pair<std::size_t, std::uint32_t>> bitWords; // image word, mask
+    // The blocks of the image the runs and bits are in (ImageWrites): what a copy marks
+    // written, for the network's history.
+    std::vector<std::uint64_t> blocks;
 
     void addWord(std::int32_t index, int width) {
         if (index < 0)
@@ -69,6 +72,10 @@ Share shareOf(const Station &s, const model::SharedMode &mode, int number) {
                 share.addWord(l.word(x), l.wordBits(x));
         }
     }
+    for (const Share::WordRun &run : share.wordRuns)
+        ImageWrites::addBlocks(share.blocks, run.first, run.count);
+    for (const auto &[word, mask] : share.bitWords)
+        ImageWrites::addBlocks(share.blocks, word, 1);
     return share;
 }
 
@@ -136,15 +143,11 @@ void copy(const Member &from, const Member &to) {
     const simulator::Engine &src = from.station->engine();
     simulator::Engine &dst = to.station->engine();
     // The same devices in every station: the same indices, the target being one.
-    ImageWrites &written = to.station->written(); // for the network's history
-    for (const Share::WordRun &run : from.share.wordRuns) {
+    for (const Share::WordRun &run : from.share.wordRuns)
         dst.copyImageWords(src, run.first, run.count, run.width);
-        written.mark(run.first, run.count);
-    }
-    for (const auto &[word, mask] : from.share.bitWords) {
+    for (const auto &[word, mask] : from.share.bitWords)
         dst.copyImageBits(src, word, mask);
-        written.mark(word, 1);
-    }
+    to.station->written().mark(from.share.blocks); // for the network's history
 }
 
 // CPU Link: station 0 polls slaves 1..n in "instant interrupt way" (B-3-4): every network
