@@ -31,33 +31,6 @@ constexpr std::size_t encodedBound(std::size_t n) {
     return 2 * n + n / 8 + 8;
 }
 
-// Writes at `out` the words of `now` in the ranges (cut at n) that differ from `old`, encoded
-// as Instant::changes keeps them, copies them into `old`, and returns the end of what it wrote
-// (`out` has room for encodedBound(n)). A changed word is (index, value); neighbours that
-// changed, two or more, or a changed word that ends a group of 8 (the next group may go on
-// with it), are a run (first | kRun, count, values), which goes on across groups and ranges as
-// long as the words that changed follow each other: a busy program's registers side by side
-// cost a word each.
-// A block of 64 words is compared in one pass of XOR and OR, which the compiler turns into
-// wide vector instructions (AVX2 where the processor has it: the function is compiled twice,
-// chosen when the program loads); a block that differs, and a range shorter than a block
-// (what a program writes), is looked at 8 words at a time: which of them differ is one mask
-// (a vector compare), a group that changed whole is 8 values copied onto the run. Comparing
-// every station's image was most of the recording's cost (BM_NetworkHistoryRatio,
-// docs/performance.md); writing each word of a changed group as a pair without a branch, and
-// finding the runs in the pairs afterwards, was most of what was left with busy programs.
-// Not under a sanitizer: the clones' resolver runs while the dynamic linker relocates the
-// program, before the sanitizer's runtime is up, and ThreadSanitizer's instrumentation of it
-// crashed there (CI, test_network under TSan).
-#if defined(__has_feature)
-#if __has_feature(thread_sanitizer) || __has_feature(address_sanitizer) ||                         \
-    __has_feature(memory_sanitizer)
-#define RUNG_SANITIZED 1
-#endif
-#endif
-#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
-#define RUNG_SANITIZED 1
-#endif
 // Where appendChangedWords writes: the end of what it wrote, and the run open there.
 struct Encoder {
     std::uint32_t *out = nullptr;
@@ -65,12 +38,11 @@ struct Encoder {
     std::size_t runEnd = 0;       // the word after it
 };
 
-// A group of `length` (at most 8) words from g of which some differ: their changes written,
-// `old` updated. Out of line: inlined, the compiler shared its loads with the compare of the
-// groups that do not differ and took that compare out of the vector registers (5 times the
-// instructions).
-// L: the group's length when known (8), else 0 and `length`: the compare and the copies then
-// unroll.
+// A group of `length` (at most 8) words from g of which some differ: which ones as a mask,
+// their changes written (runs found in the mask), `old` updated. L: the length when it is
+// known (8: the compare and the copies unroll), else 0. Out of line: inlined into
+// appendChangedWords, the compiler shared its loads with the compare of the groups that do not
+// differ, which left the vector registers (5 times the instructions).
 template <std::size_t L>
 [[gnu::noinline]] void encodeGroup(Encoder &e, std::int32_t *old, const std::int32_t *now,
                                    std::size_t g, std::size_t length) {
@@ -106,6 +78,33 @@ template <std::size_t L>
     std::memcpy(old + g, now + g, length * sizeof(std::int32_t));
 }
 
+// Writes at `out` the words of `now` in the ranges (cut at n) that differ from `old`, encoded
+// as Instant::changes keeps them, copies them into `old`, and returns the end of what it wrote
+// (`out` has room for encodedBound(n)). A changed word is (index, value); neighbours that
+// changed, two or more, or a changed word that ends a group of 8 (the next group may go on
+// with it), are a run (first | kRun, count, values), which goes on across groups and ranges as
+// long as the words that changed follow each other: a busy program's registers side by side
+// cost a word each.
+// A block of 64 words is compared in one pass of XOR and OR, which the compiler turns into
+// wide vector instructions (AVX2 where the processor has it: the function is compiled twice,
+// chosen when the program loads); a block that differs, and a range shorter than a block
+// (what a program writes), is looked at 8 words at a time the same way (encodeGroup for a
+// group that differs: a group that changed whole is 8 values copied onto the run). Comparing
+// every station's image was most of the recording's cost (BM_NetworkHistoryRatio,
+// docs/performance.md); writing each word of a changed group as a pair without a branch, and
+// finding the runs in the pairs afterwards, was most of what was left with busy programs.
+// Not under a sanitizer: the clones' resolver runs while the dynamic linker relocates the
+// program, before the sanitizer's runtime is up, and ThreadSanitizer's instrumentation of it
+// crashed there (CI, test_network under TSan).
+#if defined(__has_feature)
+#if __has_feature(thread_sanitizer) || __has_feature(address_sanitizer) ||                         \
+    __has_feature(memory_sanitizer)
+#define RUNG_SANITIZED 1
+#endif
+#endif
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
+#define RUNG_SANITIZED 1
+#endif
 #if defined(__x86_64__) && (defined(__clang__) || defined(__GNUC__)) && !defined(RUNG_SANITIZED)
 [[gnu::target_clones("avx2", "default")]]
 #endif
