@@ -151,8 +151,7 @@ void alignRanges(simulator::WordRanges &ranges, std::size_t n) {
 
 // Calls f(index, value) for each word change of one station's part from c[p] (its length
 // first), and leaves p after it.
-template <typename F>
-void forEachWordChange(const std::vector<std::uint32_t> &c, std::size_t &p, F f) {
+template <typename C, typename F> void forEachWordChange(const C &c, std::size_t &p, F f) {
     const std::size_t end = p + 1 + c[p];
     ++p;
     while (p < end) {
@@ -170,7 +169,7 @@ void forEachWordChange(const std::vector<std::uint32_t> &c, std::size_t &p, F f)
 }
 
 // p from one station's part of Instant::changes to the next one's.
-void skipStation(const std::vector<std::uint32_t> &c, std::size_t &p) {
+template <typename C> void skipStation(const C &c, std::size_t &p) {
     p += 4;
     p += 1 + std::size_t(c[p]);
     p += 1 + std::size_t(c[p]);
@@ -179,7 +178,9 @@ void skipStation(const std::vector<std::uint32_t> &c, std::size_t &p) {
 } // namespace
 
 struct NetworkHistory::Key {
-    std::vector<std::int32_t> words;
+    explicit Key(HistoryArena *arena)
+        : words(HistoryAllocator<std::int32_t>(arena)) {}
+    std::vector<std::int32_t, HistoryAllocator<std::int32_t>> words;
     // The forced bits, a mask and a value a word, kept for the words that have any: (index,
     // mask, value) each (a key of the whole image would be three times its words).
     std::vector<std::uint32_t> forces;
@@ -258,7 +259,7 @@ void NetworkHistory::record(const Network &network, bool commands) {
     const auto &stations = network.stations();
     if (stations.size() != w.stations.size())
         return; // not the network start() was given
-    Instant instant;
+    Instant instant(m_arena.get());
     instant.us = network.nowUs();
     bool key = w.sinceKey >= m_limits.keyEvery || w.changeBytes >= w.keyBytes;
     std::vector<std::uint32_t> &changes = w.changes;
@@ -352,8 +353,8 @@ void NetworkHistory::record(const Network &network, bool commands) {
         for (const auto &station : stations)
             instant.statistics.push_back(station->engine().statistics());
         for (const Worker::Station &s : w.stations) {
-            auto k = std::make_shared<Key>();
-            k->words = s.words;
+            auto k = std::make_shared<Key>(m_arena.get());
+            k->words.assign(s.words.begin(), s.words.end());
             k->forceWords = s.forceMask.size();
             const std::uint32_t *mask = s.forceMask.data();
             for (std::size_t b = 0; b < s.forceMask.size(); b += 64) {
@@ -440,7 +441,7 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
     const Key &key = *m_instants[k].keys[station];
     model::Snapshot s;
     s.layout = m_layouts[station];
-    s.words = key.words;
+    s.words.assign(key.words.begin(), key.words.end());
     s.forceMask.assign(key.forceWords, 0);
     s.forceValue.assign(key.forceWords, 0);
     for (std::size_t f = 0; f < key.forces.size(); f += 3) {
@@ -450,7 +451,7 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
     s.statistics = m_instants[k].statistics[station];
     std::vector<std::uint8_t> flow = key.flow;
     for (std::size_t j = k + 1; j <= instant; ++j) {
-        const std::vector<std::uint32_t> &c = m_instants[j].changes;
+        const auto &c = m_instants[j].changes;
         std::size_t p = 0;
         for (std::size_t t = 0; t < station; ++t)
             skipStation(c, p);
@@ -518,7 +519,7 @@ std::vector<NetworkHistory::WordValue> NetworkHistory::wordValues(std::size_t st
             now.scans = instant.statistics[station].scans;
             now.timeMs = instant.statistics[station].timeMs;
         } else {
-            const std::vector<std::uint32_t> &c = instant.changes;
+            const auto &c = instant.changes;
             std::size_t p = 0;
             for (std::size_t t = 0; t < station; ++t)
                 skipStation(c, p);

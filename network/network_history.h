@@ -32,6 +32,8 @@
 // stationAt) under the history's lock, which the worker takes only to append an instant.
 // The comparison with the slice before runs outside the lock, on the worker's own copy.
 
+#include "network/history_arena.h"
+
 #include "model/image/snapshot.h"
 
 #include <QtGlobal>
@@ -115,7 +117,9 @@ private:
         // neighbours that changed, (first | kRun, count, values): a busy program's registers
         // side by side cost a word each (network_history.cpp, appendChangedWords, says when a
         // run is written). The other statistics (period, evaluation times) are the key's.
-        std::vector<std::uint32_t> changes;
+        std::vector<std::uint32_t, HistoryAllocator<std::uint32_t>> changes;
+        explicit Instant(HistoryArena *arena)
+            : changes(HistoryAllocator<std::uint32_t>(arena)) {}
         std::size_t bytes() const;
     };
     struct Worker; // what the worker compares against
@@ -128,6 +132,9 @@ private:
     Limits m_limits;
     std::unique_ptr<Worker> m_worker;
     mutable std::mutex m_mutex;
+    // The instants' changes and the keys' words (history_arena.h); before m_instants, so that
+    // it goes after them.
+    std::unique_ptr<HistoryArena> m_arena = std::make_unique<HistoryArena>();
     std::deque<Instant> m_instants; // the front one is a key
     std::vector<std::shared_ptr<const model::MemoryLayout>> m_layouts;
     std::size_t m_bytes = 0;

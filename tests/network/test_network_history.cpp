@@ -4,6 +4,7 @@
 // (NetworkSession.* runs under ThreadSanitizer) and a station's past as a read-only
 // MonitorSource.
 
+#include "network/history_arena.h"
 #include "network/network_history.h"
 #include "network/network_session.h"
 #include "network/station_past_source.h"
@@ -457,8 +458,8 @@ TEST(NetworkHistory, AWordALinkExchangeWritesIsRecordedAtTheInstantItArrived) {
     qint64 arrived = -1;
     for (int k = 1; k <= 200; ++k) {
         if (k == 30 || k == 120) {
-            ASSERT_TRUE(master.engine().writeWord(historyAddress(master, "VR1"),
-                                                  k == 30 ? 555 : 77));
+            ASSERT_TRUE(
+                master.engine().writeWord(historyAddress(master, "VR1"), k == 30 ? 555 : 77));
             history.record(*net, true);
             live.push_back(captureLive(*net));
         }
@@ -477,6 +478,41 @@ TEST(NetworkHistory, AWordALinkExchangeWritesIsRecordedAtTheInstantItArrived) {
     ASSERT_TRUE(then && before);
     EXPECT_EQ(then->value(d0), 555);
     EXPECT_NE(before->value(d0), 555);
+}
+
+// The history's memory (history_arena.h): what is allocated keeps its bytes; chunks go back
+// once everything in them is freed, oldest first as the history drops its oldest instants or
+// in any order, and the few kept come back for the next allocations.
+TEST(HistoryArena, ChunksGoWhenEmptyAndAFewComeBackForTheNext) {
+    HistoryArena arena;
+    constexpr std::size_t kPieces = 3000; // 4 KB each: 6 chunks and more
+    for (const bool oldestFirst : {true, false}) {
+        SCOPED_TRACE(oldestFirst);
+        std::vector<std::uint32_t *> pieces;
+        for (std::size_t k = 0; k < kPieces; ++k) {
+            auto *p = static_cast<std::uint32_t *>(arena.allocate(4096));
+            std::fill_n(p, 1024, static_cast<std::uint32_t>(k));
+            pieces.push_back(p);
+        }
+        EXPECT_GE(arena.chunksHeld(), 6u);
+        const std::size_t held = arena.chunksHeld();
+        for (std::size_t k = 0; k < kPieces; ++k)
+            ASSERT_EQ(pieces[k][1023], k);
+        for (std::size_t k = 0; k < kPieces; ++k)
+            arena.deallocate(pieces[oldestFirst ? k : kPieces - 1 - k], 4096);
+        EXPECT_LE(arena.chunksHeld(), 5u); // the current one and four kept
+        // The same again takes the chunks kept first.
+        for (std::size_t k = 0; k < kPieces; ++k)
+            pieces[k] = static_cast<std::uint32_t *>(arena.allocate(4096));
+        EXPECT_LE(arena.chunksHeld(), held + 1);
+        for (std::size_t k = 0; k < kPieces; ++k)
+            arena.deallocate(pieces[k], 4096);
+    }
+    // A large piece comes from the heap, not a chunk.
+    const std::size_t before = arena.chunksHeld();
+    void *large = arena.allocate(HistoryArena::kChunk);
+    EXPECT_EQ(arena.chunksHeld(), before);
+    arena.deallocate(large, HistoryArena::kChunk);
 }
 
 // A Host Link master (through a bridge, or here straight onto the port) forces a bit of the
