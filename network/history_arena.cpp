@@ -11,9 +11,9 @@ namespace rung::network {
 
 HistoryArena::~HistoryArena() {
     if (m_current)
-        free(m_current);
+        freeChunk(m_current);
     for (char *c : m_spare)
-        free(c);
+        freeChunk(c);
 }
 
 char *HistoryArena::newChunk() {
@@ -32,7 +32,7 @@ char *HistoryArena::newChunk() {
     return chunk;
 }
 
-void HistoryArena::free(char *chunk) {
+void HistoryArena::freeChunk(char *chunk) {
     ::operator delete(chunk, std::align_val_t(kChunk));
     --m_held;
 }
@@ -41,7 +41,7 @@ void HistoryArena::release(char *chunk) {
     if (m_spare.size() < kSpare)
         m_spare.push_back(chunk);
     else
-        free(chunk);
+        freeChunk(chunk);
 }
 
 void *HistoryArena::allocate(std::size_t bytes) {

@@ -38,7 +38,7 @@ private:
     static constexpr std::size_t kSpare = 4;
     char *newChunk();
     void release(char *chunk); // kept for the next, or freed
-    void free(char *chunk);
+    void freeChunk(char *chunk);
     char *m_current = nullptr;
     std::size_t m_used = 0;
     std::vector<char *> m_spare;
