@@ -19,6 +19,7 @@ comms::slave::ImageChange EngineImage::apply(const std::vector<model::DeviceComm
                                              QDeadlineTimer) {
     comms::slave::ImageChange change;
     for (const model::DeviceCommand &c : commands) {
+        markWritten(c);
         QString error;
         if (!simulator::applyCommand(*m_engine, simulator::EngineCommand{0, c}, &error)) {
             change.status = comms::slave::ImageChange::Status::Refused;
@@ -28,6 +29,34 @@ comms::slave::ImageChange EngineImage::apply(const std::vector<model::DeviceComm
     }
     m_snapshot.reset(); // the next read sees the write
     return change;
+}
+
+void EngineImage::markWritten(const model::DeviceCommand &c) {
+    if (!m_written)
+        return;
+    const model::MemoryLayout &l = m_engine->layout();
+    int word = -1;
+    int count = 1;
+    switch (c.kind) {
+    case model::DeviceCommand::Kind::WriteBit:
+        word = l.bit(c.address).word; // an input's stimulus: read by the next scan
+        break;
+    case model::DeviceCommand::Kind::WriteWord:
+        word = l.word(c.address);
+        count = 2; // a double word (PL110 VD) is two
+        break;
+    case model::DeviceCommand::Kind::WriteSetValue:
+        word = l.setValueWord(c.address);
+        break;
+    case model::DeviceCommand::Kind::Force:
+    case model::DeviceCommand::Kind::Release:
+    case model::DeviceCommand::Kind::ReleaseAll:
+        break;
+    }
+    if (word >= 0)
+        m_written->mark(static_cast<std::size_t>(word), static_cast<std::size_t>(count));
+    else // forced bits, or a device the engine refuses: the history looks at everything
+        m_written->markAll(true);
 }
 
 comms::slave::ImageChange EngineImage::setMode(comms::slave::OperatingMode mode, QDeadlineTimer) {

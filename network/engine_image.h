@@ -6,14 +6,17 @@
 // network's.
 
 #include "comms/slave/device_image.h"
+#include "network/image_writes.h"
 #include "simulator/engine.h"
 
 namespace rung::network {
 
 class EngineImage final : public comms::slave::DeviceImage {
 public:
-    explicit EngineImage(simulator::Engine *engine)
-        : m_engine(engine) {}
+    // written: where the writes are marked for the network's history (the station's).
+    EngineImage(simulator::Engine *engine, ImageWrites *written)
+        : m_engine(engine)
+        , m_written(written) {}
 
     std::shared_ptr<const model::Snapshot> snapshot() const override;
     comms::slave::ImageChange apply(const std::vector<model::DeviceCommand> &commands,
@@ -26,6 +29,8 @@ public:
 
 private:
     simulator::Engine *m_engine;
+    ImageWrites *m_written;
+    void markWritten(const model::DeviceCommand &command);
     // The snapshot of the last scan, taken once for the requests answered after it.
     mutable std::shared_ptr<const model::Snapshot> m_snapshot;
     mutable quint64 m_scans = ~quint64(0);

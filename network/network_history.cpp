@@ -3,8 +3,11 @@
 #include "network/network.h"
 #include "network/station.h"
 #include "simulator/engine.h"
+#include "simulator/scan_writes.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 
 namespace rung::network {
 
@@ -20,13 +23,76 @@ template <std::size_t N>
     return d != 0;
 }
 
-// Appends (index, value) for every word of `now` that differs from `old`, and copies it into
-// `old`. A block of 64 words is compared in one pass of XOR and OR, which the compiler turns
-// into wide vector instructions (AVX2 where the processor has it: the function is compiled
-// twice, chosen when the program loads); a block that differs is looked at 8 words at a time
-// the same way, and those 8 written out without a branch a word. Comparing every station's
-// image is most of the recording's cost (BM_NetworkHistoryRatio, docs/performance.md): this
-// is about 3 instructions a 32 bytes; a memcmp a block and the loop around it were about 8.
+constexpr std::uint32_t kRun = 0x80000000u; // a word change's index: a run follows
+
+// The most appendChangedWords writes for an image of n words: a pair a word, or a run of one
+// (three words) for the last word of a group of 8 and a pair for each other.
+constexpr std::size_t encodedBound(std::size_t n) {
+    return 2 * n + n / 8 + 8;
+}
+
+// Where appendChangedWords writes: the end of what it wrote, and the run open there.
+struct Encoder {
+    std::uint32_t *out = nullptr;
+    std::uint32_t *run = nullptr; // the count of the run open at the end of out (or none)
+    std::size_t runEnd = 0;       // the word after it
+};
+
+// A group of `length` (at most 8) words from g of which some differ: which ones as a mask,
+// their changes written (runs found in the mask), `old` updated. L: the length when it is
+// known (8: the compare and the copies unroll), else 0. Out of line: inlined into
+// appendChangedWords, the compiler shared its loads with the compare of the groups that do not
+// differ, which left the vector registers (5 times the instructions).
+template <std::size_t L>
+[[gnu::noinline]] void encodeGroup(Encoder &e, std::int32_t *old, const std::int32_t *now,
+                                   std::size_t g, std::size_t length) {
+    if constexpr (L != 0)
+        length = L;
+    std::uint32_t changed = 0;
+    for (std::size_t k = 0; k < length; ++k)
+        changed |= static_cast<std::uint32_t>(old[g + k] != now[g + k]) << k;
+    while (changed != 0) {
+        const int from = std::countr_zero(changed);
+        const int ones = std::countr_one(changed >> from);
+        changed &= ~(((1u << ones) - 1u) << from);
+        const std::size_t first = g + static_cast<std::size_t>(from);
+        const auto count = static_cast<std::size_t>(ones);
+        if (e.run && e.runEnd == first) {
+            *e.run += static_cast<std::uint32_t>(count);
+        } else if (count == 1 && (first % 8) != 7) {
+            e.out[0] = static_cast<std::uint32_t>(first);
+            e.out[1] = static_cast<std::uint32_t>(now[first]);
+            e.out += 2;
+            e.run = nullptr;
+            continue;
+        } else {
+            e.out[0] = static_cast<std::uint32_t>(first) | kRun;
+            e.out[1] = static_cast<std::uint32_t>(count);
+            e.run = e.out + 1;
+            e.out += 2;
+        }
+        std::memcpy(e.out, now + first, count * sizeof(std::uint32_t));
+        e.out += count;
+        e.runEnd = first + count;
+    }
+    std::memcpy(old + g, now + g, length * sizeof(std::int32_t));
+}
+
+// Writes at `out` the words of `now` in the ranges (cut at n) that differ from `old`, encoded
+// as Instant::changes keeps them, copies them into `old`, and returns the end of what it wrote
+// (`out` has room for encodedBound(n)). A changed word is (index, value); neighbours that
+// changed, two or more, or a changed word that ends a group of 8 (the next group may go on
+// with it), are a run (first | kRun, count, values), which goes on across groups and ranges as
+// long as the words that changed follow each other: a busy program's registers side by side
+// cost a word each.
+// A block of 64 words is compared in one pass of XOR and OR, which the compiler turns into
+// wide vector instructions (AVX2 where the processor has it: the function is compiled twice,
+// chosen when the program loads); a block that differs, and a range shorter than a block
+// (what a program writes), is looked at 8 words at a time the same way (encodeGroup for a
+// group that differs: a group that changed whole is 8 values copied onto the run). Comparing
+// every station's image was most of the recording's cost (BM_NetworkHistoryRatio,
+// docs/performance.md); writing each word of a changed group as a pair without a branch, and
+// finding the runs in the pairs afterwards, was most of what was left with busy programs.
 // Not under a sanitizer: the clones' resolver runs while the dynamic linker relocates the
 // program, before the sanitizer's runtime is up, and ThreadSanitizer's instrumentation of it
 // crashed there (CI, test_network under TSan).
@@ -42,67 +108,50 @@ template <std::size_t N>
 #if defined(__x86_64__) && (defined(__clang__) || defined(__GNUC__)) && !defined(RUNG_SANITIZED)
 [[gnu::target_clones("avx2", "default")]]
 #endif
-void appendChangedWords(std::int32_t *old, const std::int32_t *now, std::size_t n,
-                        std::vector<std::uint32_t> &changes) {
+std::uint32_t *
+appendChangedWords(std::int32_t *old, const std::int32_t *now,
+                   const std::pair<std::size_t, std::size_t> *ranges, std::size_t count,
+                   std::size_t n, std::uint32_t *out) {
     constexpr std::size_t kBlock = 64;
     constexpr std::size_t kGroup = 8;
-    // Every word of [from, to) written as a pair, the cursor moved on only where it changed.
-    auto walk = [&](std::size_t from, std::size_t to) {
-        const std::size_t at = changes.size();
-        changes.resize(at + 2 * (to - from));
-        std::uint32_t *out = changes.data() + at;
-        for (std::size_t k = from; k < to; ++k) {
-            out[0] = static_cast<std::uint32_t>(k);
-            out[1] = static_cast<std::uint32_t>(now[k]);
-            out += old[k] != now[k] ? 2 : 0;
-            old[k] = now[k];
+    Encoder e{out};
+    for (std::size_t r = 0; r < count; ++r) {
+        const std::size_t to = std::min(ranges[r].second, n);
+        std::size_t b = ranges[r].first;
+        for (; b + kBlock <= to; b += kBlock) {
+            if (!wordsDiffer<kBlock>(old + b, now + b)) [[likely]]
+                continue;
+            for (std::size_t g = b; g < b + kBlock; g += kGroup)
+                if (wordsDiffer<kGroup>(old + g, now + g))
+                    encodeGroup<kGroup>(e, old, now, g, kGroup);
         }
-        changes.resize(static_cast<std::size_t>(out - changes.data()));
-    };
-    std::size_t b = 0;
-    for (; b + kBlock <= n; b += kBlock) {
-        if (!wordsDiffer<kBlock>(old + b, now + b)) [[likely]]
-            continue;
-        for (std::size_t g = b; g < b + kBlock; g += kGroup)
-            if (wordsDiffer<kGroup>(old + g, now + g))
-                walk(g, g + kGroup);
+        for (; b + kGroup <= to; b += kGroup)
+            if (wordsDiffer<kGroup>(old + b, now + b))
+                encodeGroup<kGroup>(e, old, now, b, kGroup);
+        if (b < to && std::memcmp(old + b, now + b, (to - b) * sizeof(std::int32_t)) != 0)
+            encodeGroup<0>(e, old, now, b, to - b); // the image's last words
     }
-    walk(b, n);
+    return e.out;
 }
 
-constexpr std::uint32_t kRun = 0x80000000u; // a word change's index: a run follows
-
-// (index, value) pairs, indices rising, as Instant::changes keeps them: three or more
-// neighbours as one run.
-void encodeWordChanges(const std::vector<std::uint32_t> &pairs,
-                       std::vector<std::uint32_t> &changes) {
-    const std::size_t n = pairs.size();
-    const std::size_t at = changes.size();
-    changes.resize(at + n); // a run never takes more than its pairs
-    const std::uint32_t *in = pairs.data();
-    std::uint32_t *out = changes.data() + at;
-    for (std::size_t i = 0; i < n;) {
-        std::size_t e = i + 2; // the run [i, e) of neighbours
-        while (e < n && in[e] == in[e - 2] + 1)
-            e += 2;
-        if (e - i < 6) {
-            for (std::size_t k = i; k < e; ++k)
-                *out++ = in[k];
-        } else {
-            *out++ = in[i] | kRun;
-            *out++ = static_cast<std::uint32_t>((e - i) / 2);
-            for (std::size_t k = i + 1; k < e; k += 2)
-                *out++ = in[k];
-        }
-        i = e;
+// The ranges widened to whole groups of 8 words (appendChangedWords compares a group in one
+// pass), within the image's n words, and joined where they then touch.
+void alignRanges(simulator::WordRanges &ranges, std::size_t n) {
+    simulator::WordRanges out;
+    for (auto [b, e] : ranges) {
+        b &= ~std::size_t(7);
+        e = std::min(n, (e + 7) & ~std::size_t(7));
+        if (!out.empty() && b <= out.back().second)
+            out.back().second = std::max(out.back().second, e);
+        else if (b < e)
+            out.emplace_back(b, e);
     }
-    changes.resize(static_cast<std::size_t>(out - changes.data()));
+    ranges = std::move(out);
 }
 
 // Calls f(index, value) for each word change of one station's part from c[p] (its length
 // first), and leaves p after it.
-template <typename F>
-void forEachWordChange(const std::vector<std::uint32_t> &c, std::size_t &p, F f) {
+template <typename C, typename F> void forEachWordChange(const C &c, std::size_t &p, F f) {
     const std::size_t end = p + 1 + c[p];
     ++p;
     while (p < end) {
@@ -120,7 +169,7 @@ void forEachWordChange(const std::vector<std::uint32_t> &c, std::size_t &p, F f)
 }
 
 // p from one station's part of Instant::changes to the next one's.
-void skipStation(const std::vector<std::uint32_t> &c, std::size_t &p) {
+template <typename C> void skipStation(const C &c, std::size_t &p) {
     p += 4;
     p += 1 + std::size_t(c[p]);
     p += 1 + std::size_t(c[p]);
@@ -129,7 +178,9 @@ void skipStation(const std::vector<std::uint32_t> &c, std::size_t &p) {
 } // namespace
 
 struct NetworkHistory::Key {
-    std::vector<std::int32_t> words;
+    explicit Key(HistoryArena *arena)
+        : words(HistoryAllocator<std::int32_t>(arena)) {}
+    std::vector<std::int32_t, HistoryAllocator<std::int32_t>> words;
     // The forced bits, a mask and a value a word, kept for the words that have any: (index,
     // mask, value) each (a key of the whole image would be three times its words).
     std::vector<std::uint32_t> forces;
@@ -148,13 +199,19 @@ struct NetworkHistory::Worker {
         std::vector<std::uint32_t> forceValue;
         std::vector<std::uint8_t> flow;
         bool flowRecorded = false;
+        // The words a scan of its program can write (simulator/scan_writes.h); none: any.
+        const simulator::Program *program = nullptr;
+        std::optional<simulator::WordRanges> scanWrites;
     };
     std::vector<Station> stations;
     std::size_t sinceKey = 0;           // instants since the last key
     std::size_t changeBytes = 0;        // bytes of changes since the last key
     std::size_t keyBytes = 0;           // what a key of every station costs
     std::vector<std::uint32_t> changes; // reused between instants
-    std::vector<std::uint32_t> pairs;   // one station's (index, value), reused
+    // One station's word changes, encoded (appendChangedWords): room for encodedBound words.
+    std::unique_ptr<std::uint32_t[]> encoded;
+    simulator::WordRanges written; // one station's ranges marked written, reused
+    std::size_t encodedSize = 0;
 };
 
 std::size_t NetworkHistory::Instant::bytes() const {
@@ -191,6 +248,8 @@ void NetworkHistory::start(const Network &network) {
     }
     *m_worker = Worker{};
     m_worker->stations.resize(network.stations().size());
+    for (const auto &s : network.stations())
+        s->written().clear();               // what was written before is in the first instant
     m_worker->sinceKey = m_limits.keyEvery; // the first instant is a key
     record(network, true);
 }
@@ -200,7 +259,7 @@ void NetworkHistory::record(const Network &network, bool commands) {
     const auto &stations = network.stations();
     if (stations.size() != w.stations.size())
         return; // not the network start() was given
-    Instant instant;
+    Instant instant(m_arena.get());
     instant.us = network.nowUs();
     bool key = w.sinceKey >= m_limits.keyEvery || w.changeBytes >= w.keyBytes;
     std::vector<std::uint32_t> &changes = w.changes;
@@ -215,8 +274,10 @@ void NetworkHistory::record(const Network &network, bool commands) {
         changes.push_back(static_cast<std::uint32_t>(scans >> 32));
         changes.push_back(static_cast<std::uint32_t>(ms));
         changes.push_back(static_cast<std::uint32_t>(ms >> 32));
-        // Forced bits change only by a command, between two slices.
-        if (commands) {
+        Station &station = *stations[i];
+        ImageWrites &written = station.written();
+        // Forced bits change only by a command, between two slices, or a slave's force.
+        if (commands || written.forces()) {
             const model::Snapshot s = engine.snapshot();
             if (s.forceMask != prev.forceMask || s.forceValue != prev.forceValue) {
                 prev.forceMask = s.forceMask;
@@ -224,18 +285,46 @@ void NetworkHistory::record(const Network &network, bool commands) {
                 key = true;
             }
         }
-        // The words that changed (appendChangedWords).
+        // The words that changed (appendChangedWords): those a scan of the program can write
+        // and those written between scans (Station::written), or every word after commands,
+        // after a write the station could not say where, and when the program changed (an
+        // online edit taking over at a scan's END: the scan ran the program before).
+        const simulator::Program *program = &engine.program();
+        bool all = commands || written.all() || program != prev.program;
+        if (program != prev.program || commands) {
+            prev.program = program;
+            prev.scanWrites = simulator::scanWrites(*program);
+            if (prev.scanWrites)
+                alignRanges(*prev.scanWrites, engine.words().size());
+        }
+        all = all || !prev.scanWrites;
         const std::span<const std::int32_t> words = engine.words();
         if (prev.words.size() != words.size()) {
             prev.words.assign(words.begin(), words.end());
             key = true;
         }
-        w.pairs.clear();
-        appendChangedWords(prev.words.data(), words.data(), words.size(), w.pairs);
-        const std::size_t countAt = changes.size();
-        changes.push_back(0);
-        encodeWordChanges(w.pairs, changes);
-        changes[countAt] = static_cast<std::uint32_t>(changes.size() - countAt - 1);
+        if (w.encodedSize < encodedBound(words.size())) {
+            w.encodedSize = encodedBound(words.size());
+            w.encoded = std::make_unique_for_overwrite<std::uint32_t[]>(w.encodedSize);
+        }
+        std::uint32_t *const encoded = w.encoded.get();
+        std::uint32_t *out = encoded;
+        if (all) {
+            const std::pair<std::size_t, std::size_t> whole{0, words.size()};
+            out = appendChangedWords(prev.words.data(), words.data(), &whole, 1, words.size(), out);
+        } else {
+            out = appendChangedWords(prev.words.data(), words.data(), prev.scanWrites->data(),
+                                     prev.scanWrites->size(), words.size(), out);
+            // A word both name is written once: the second compare finds it equal.
+            w.written.clear();
+            written.forEachRange(
+                [&](std::size_t b, std::size_t e) { w.written.emplace_back(b, e); });
+            out = appendChangedWords(prev.words.data(), words.data(), w.written.data(),
+                                     w.written.size(), words.size(), out);
+        }
+        written.clear();
+        changes.push_back(static_cast<std::uint32_t>(out - encoded));
+        changes.insert(changes.end(), encoded, out);
         // The power flow of the station whose ladder is on screen (the others record none).
         const bool flowRecorded = engine.powerFlowRecording();
         const std::vector<std::uint8_t> &flow = engine.powerFlow();
@@ -264,8 +353,8 @@ void NetworkHistory::record(const Network &network, bool commands) {
         for (const auto &station : stations)
             instant.statistics.push_back(station->engine().statistics());
         for (const Worker::Station &s : w.stations) {
-            auto k = std::make_shared<Key>();
-            k->words = s.words;
+            auto k = std::make_shared<Key>(m_arena.get());
+            k->words.assign(s.words.begin(), s.words.end());
             k->forceWords = s.forceMask.size();
             const std::uint32_t *mask = s.forceMask.data();
             for (std::size_t b = 0; b < s.forceMask.size(); b += 64) {
@@ -352,7 +441,7 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
     const Key &key = *m_instants[k].keys[station];
     model::Snapshot s;
     s.layout = m_layouts[station];
-    s.words = key.words;
+    s.words.assign(key.words.begin(), key.words.end());
     s.forceMask.assign(key.forceWords, 0);
     s.forceValue.assign(key.forceWords, 0);
     for (std::size_t f = 0; f < key.forces.size(); f += 3) {
@@ -362,7 +451,7 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
     s.statistics = m_instants[k].statistics[station];
     std::vector<std::uint8_t> flow = key.flow;
     for (std::size_t j = k + 1; j <= instant; ++j) {
-        const std::vector<std::uint32_t> &c = m_instants[j].changes;
+        const auto &c = m_instants[j].changes;
         std::size_t p = 0;
         for (std::size_t t = 0; t < station; ++t)
             skipStation(c, p);
@@ -430,7 +519,7 @@ std::vector<NetworkHistory::WordValue> NetworkHistory::wordValues(std::size_t st
             now.scans = instant.statistics[station].scans;
             now.timeMs = instant.statistics[station].timeMs;
         } else {
-            const std::vector<std::uint32_t> &c = instant.changes;
+            const auto &c = instant.changes;
             std::size_t p = 0;
             for (std::size_t t = 0; t < station; ++t)
                 skipStation(c, p);

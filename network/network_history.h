@@ -19,14 +19,20 @@
 // the changes since the last one have cost as much as a key, and whenever a station's forced
 // bits or its power-flow recording changed, so a rebuild applies at most keyEvery changes.
 //
-// Cost: finding the changed words reads every station's whole image each slice (a vectorized
-// pass a block of 64 words), which at full speed costs about as much as the scans themselves
-// (BM_NetworkHistoryRatio, docs/performance.md: the engine does not say which words a scan
-// wrote).
+// Cost: finding the changed words compares, of each station, only the words a scan of its
+// program can write (simulator/scan_writes.h: its destinations, the system devices, the
+// inputs; a few hundred of a Vigor VB's ten thousand) and the words written between its
+// scans, which their writers mark (Station::written: a link's exchange, a slave's write);
+// after commands (a write, a force, a power cycle, an online edit), after a write a writer
+// could not place, when a station's program changed, and for a program whose scan may write
+// anywhere (an index register, a communication instruction), the whole image (a vectorized
+// pass a block of 64 words). BM_NetworkHistoryRatio, docs/performance.md.
 //
 // Threads: the session's worker records (start, record); any thread reads (window, at,
 // stationAt) under the history's lock, which the worker takes only to append an instant.
 // The comparison with the slice before runs outside the lock, on the worker's own copy.
+
+#include "network/history_arena.h"
 
 #include "model/image/snapshot.h"
 
@@ -64,8 +70,11 @@ public:
     // Worker: forgets the past; the network as it is now is the first instant.
     void start(const Network &network);
     // Worker: the network after a slice of virtual time, or after commands were applied
-    // between two (commands: forced bits may have changed). A second instant at the same
-    // virtual time is shown in place of the first.
+    // between two (commands: forced bits may have changed; every word is compared). A write
+    // into a station's image between slices that is neither a scan's nor marked in
+    // Station::written (a link's exchange, a slave's write) is a command: record it with
+    // commands = true. A second instant at the same virtual time is shown in place of the
+    // first.
     void record(const Network &network, bool commands);
 
     // Any thread.
@@ -105,10 +114,12 @@ private:
         // Per station, when not a key: [scans (2 words, low first), virtual ms (2 words),
         // length L of the word changes, L words of changes, flow changes m, index x m] (a flow
         // change toggles that instruction's result). A word change is (index, value), or, for
-        // three or more neighbours that changed, (first | kRun, count, values): a busy
-        // program's registers side by side cost half. The other statistics (period, evaluation
-        // times) are the key's.
-        std::vector<std::uint32_t> changes;
+        // neighbours that changed, (first | kRun, count, values): a busy program's registers
+        // side by side cost a word each (network_history.cpp, appendChangedWords, says when a
+        // run is written). The other statistics (period, evaluation times) are the key's.
+        std::vector<std::uint32_t, HistoryAllocator<std::uint32_t>> changes;
+        explicit Instant(HistoryArena *arena)
+            : changes(HistoryAllocator<std::uint32_t>(arena)) {}
         std::size_t bytes() const;
     };
     struct Worker; // what the worker compares against
@@ -121,6 +132,9 @@ private:
     Limits m_limits;
     std::unique_ptr<Worker> m_worker;
     mutable std::mutex m_mutex;
+    // The instants' changes and the keys' words (history_arena.h); before m_instants, so that
+    // it goes after them.
+    std::unique_ptr<HistoryArena> m_arena = std::make_unique<HistoryArena>();
     std::deque<Instant> m_instants; // the front one is a key
     std::vector<std::shared_ptr<const model::MemoryLayout>> m_layouts;
     std::size_t m_bytes = 0;

@@ -29,6 +29,9 @@ struct Share {
     };
     std::vector<WordRun> wordRuns;
     std::vector<std::pair<std::size_t, std::uint32_t>> bitWords; // image word, mask
+    // The blocks of the image the runs and bits are in (ImageWrites): what a copy marks
+    // written, for the network's history.
+    std::vector<std::uint64_t> blocks;
 
     void addWord(std::int32_t index, int width) {
         if (index < 0)
@@ -69,6 +72,10 @@ Share shareOf(const Station &s, const model::SharedMode &mode, int number) {
                 share.addWord(l.word(x), l.wordBits(x));
         }
     }
+    for (const Share::WordRun &run : share.wordRuns)
+        ImageWrites::addBlocks(share.blocks, run.first, run.count);
+    for (const auto &[word, mask] : share.bitWords)
+        ImageWrites::addBlocks(share.blocks, word, 1);
     return share;
 }
 
@@ -118,14 +125,18 @@ const Resolved &resolved(const Member &m, SystemRole role) {
 
 void setBit(const Member &m, SystemRole role, int k, bool on) {
     const Resolved &r = resolved(m, role);
-    if (std::size_t(k) < r.bits.size() && r.bits[std::size_t(k)].valid())
+    if (std::size_t(k) < r.bits.size() && r.bits[std::size_t(k)].valid()) {
         m.station->engine().storeImageBit(r.bits[std::size_t(k)], on);
+        m.station->written().mark(std::size_t(r.bits[std::size_t(k)].word), 1);
+    }
 }
 
 void setWord(const Member &m, SystemRole role, int k, std::int32_t value) {
     const Resolved &r = resolved(m, role);
-    if (std::size_t(k) < r.words.size() && r.words[std::size_t(k)] >= 0)
+    if (std::size_t(k) < r.words.size() && r.words[std::size_t(k)] >= 0) {
         m.station->engine().storeImageWord(std::size_t(r.words[std::size_t(k)]), value, 16);
+        m.station->written().mark(std::size_t(r.words[std::size_t(k)]), 1);
+    }
 }
 
 void copy(const Member &from, const Member &to) {
@@ -136,6 +147,7 @@ void copy(const Member &from, const Member &to) {
         dst.copyImageWords(src, run.first, run.count, run.width);
     for (const auto &[word, mask] : from.share.bitWords)
         dst.copyImageBits(src, word, mask);
+    to.station->written().mark(from.share.blocks); // for the network's history
 }
 
 // CPU Link: station 0 polls slaves 1..n in "instant interrupt way" (B-3-4): every network

@@ -145,7 +145,7 @@ Station::Station(Network *network, QString name, const LoadedStation &loaded, qi
     // A scan's END, where its communication work happens, is at the end of its period: scan 1
     // ends at one period, as a program's trace counts its scans (docs/network.md).
     m_nextUs = periodMs * 1000;
-    m_image = std::make_shared<EngineImage>(m_engine.get());
+    m_image = std::make_shared<EngineImage>(m_engine.get(), &m_written);
 }
 
 Station::~Station() = default;

@@ -3,6 +3,7 @@
 // A station of a network: a PLC's program on its engine, its ports, and the slaves' side of
 // the protocols its ports answer (comms' responders over the engine's image).
 
+#include "network/image_writes.h"
 #include "network/network.h"
 
 #include "comms/slave/responder.h"
@@ -82,6 +83,9 @@ public:
     const model::ModelVariant *model() const { return m_model; }
     simulator::Engine &engine() { return *m_engine; }
     const simulator::Engine &engine() const { return *m_engine; }
+    // What was written in the image between scans (image_writes.h): marked by the writers,
+    // taken by the network's history.
+    ImageWrites &written() { return m_written; }
     qint64 periodMs() const { return m_periodMs; }
     // The engine's snapshot with what its ports did (Snapshot::communicatedUs: the front
     // panel's COMM lamp).
@@ -124,6 +128,7 @@ private:
     qint64 m_nextUs = 0; // the end of the next scan
     std::unique_ptr<simulator::Engine> m_engine;
     std::shared_ptr<EngineImage> m_image;
+    ImageWrites m_written;
     std::map<QString, std::unique_ptr<StationPort>> m_ports;
     bool m_holdAtStart = false;
     std::function<void(Station &)> m_scanHook;

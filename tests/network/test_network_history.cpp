@@ -4,6 +4,7 @@
 // (NetworkSession.* runs under ThreadSanitizer) and a station's past as a read-only
 // MonitorSource.
 
+#include "network/history_arena.h"
 #include "network/network_history.h"
 #include "network/network_session.h"
 #include "network/station_past_source.h"
@@ -12,7 +13,10 @@
 
 #include "../eventually.h"
 
+#include "model/listing/il.h"
 #include "model/target/target.h"
+#include "simulator/compiler.h"
+#include "simulator/scan_writes.h"
 
 #include <QDirIterator>
 
@@ -388,6 +392,205 @@ TEST(NetworkSession, ItsWorkerRecordsTheHistoryOfEveryStationAndAPastStationIsRe
         const NetworkHistory::Window after = history->window();
         return after.instants == 1 && after.lastUs == 0;
     }));
+}
+
+// What a station's program does not write, written between its scans, is recorded at the
+// instant it was written (image_writes.h): the history compares only what the programs can
+// write and what was marked. The PL110-Vigor example: the PL110's COM_2 writes its AI1 into
+// the Vigor's D100 over MODBUS, a word the Vigor's program only shows.
+TEST(NetworkHistory, AWordAMasterWritesIntoASlaveIsRecordedAtTheInstantItWasWritten) {
+    std::unique_ptr<Network> net =
+        buildForHistory(kHistoryExamples + QStringLiteral("/pl110-vigor/pl110-vigor.rungnet"));
+    ASSERT_TRUE(net);
+    Station &pl = *net->station(QStringLiteral("pl"));
+    Station &vb = *net->station(QStringLiteral("vb"));
+    const model::Address d100 = historyAddress(vb, "D100");
+    const auto d100Word = static_cast<std::size_t>(vb.engine().layout().word(d100));
+    const auto scanWrites = simulator::scanWrites(vb.engine().program());
+    ASSERT_TRUE(scanWrites); // the Vigor's scan does not write it: the slave's side does
+    for (const auto &[b, e] : *scanWrites)
+        ASSERT_FALSE(b <= d100Word && d100Word < e);
+    NetworkHistory history(NetworkHistory::Limits{256u << 20, 64});
+    history.start(*net);
+    std::vector<LiveInstant> live{captureLive(*net)};
+    qint64 arrived = -1;
+    for (int k = 1; k <= 200; ++k) {
+        if (k == 30 || k == 120) { // the analog input changes: a command, as the session's
+            ASSERT_TRUE(pl.engine().writeWord(historyAddress(pl, "AI1"), k == 30 ? 1234 : 77));
+            history.record(*net, true);
+            live.push_back(captureLive(*net));
+        }
+        net->runUntil(k * 10'000);
+        history.record(*net, false);
+        live.push_back(captureLive(*net));
+        if (arrived < 0 && vb.engine().value(d100) == 1234)
+            arrived = net->nowUs();
+    }
+    ASSERT_GT(arrived, 300'000);
+    EXPECT_EQ(vb.engine().value(d100), 77);
+    expectHistoryShownAsLive(history, live);
+    expectWordValuesAsLive(history, live);
+    const auto then = history.stationAt(1, arrived);
+    const auto before = history.stationAt(1, arrived - 1);
+    ASSERT_TRUE(then && before);
+    EXPECT_EQ(then->value(d100), 1234);
+    EXPECT_NE(before->value(d100), 1234);
+}
+
+// The CPU Link example: the master's VR1 (a command: the panel's knob) goes into its D0 by its
+// program, and the link's exchange writes it into D0 of both slaves, whose programs only show
+// it: recorded at the instant each slave received it.
+TEST(NetworkHistory, AWordALinkExchangeWritesIsRecordedAtTheInstantItArrived) {
+    std::unique_ptr<Network> net =
+        buildForHistory(kHistoryExamples + QStringLiteral("/cpu-link/cpu-link.rungnet"));
+    ASSERT_TRUE(net);
+    Station &master = *net->station(QStringLiteral("master"));
+    Station &slave1 = *net->station(QStringLiteral("slave1"));
+    const model::Address d0 = historyAddress(slave1, "D0");
+    const auto d0Word = static_cast<std::size_t>(slave1.engine().layout().word(d0));
+    const auto scanWrites = simulator::scanWrites(slave1.engine().program());
+    ASSERT_TRUE(scanWrites); // the slave's scan does not write it: the link does
+    for (const auto &[b, e] : *scanWrites)
+        ASSERT_FALSE(b <= d0Word && d0Word < e);
+    NetworkHistory history(NetworkHistory::Limits{256u << 20, 64});
+    history.start(*net);
+    std::vector<LiveInstant> live{captureLive(*net)};
+    qint64 arrived = -1;
+    for (int k = 1; k <= 200; ++k) {
+        if (k == 30 || k == 120) {
+            ASSERT_TRUE(
+                master.engine().writeWord(historyAddress(master, "VR1"), k == 30 ? 555 : 77));
+            history.record(*net, true);
+            live.push_back(captureLive(*net));
+        }
+        net->runUntil(k * 10'000);
+        history.record(*net, false);
+        live.push_back(captureLive(*net));
+        if (arrived < 0 && slave1.engine().value(d0) == 555)
+            arrived = net->nowUs();
+    }
+    ASSERT_GT(arrived, 300'000);
+    EXPECT_EQ(slave1.engine().value(d0), 77);
+    expectHistoryShownAsLive(history, live);
+    expectWordValuesAsLive(history, live);
+    const auto then = history.stationAt(1, arrived);
+    const auto before = history.stationAt(1, arrived - 1);
+    ASSERT_TRUE(then && before);
+    EXPECT_EQ(then->value(d0), 555);
+    EXPECT_NE(before->value(d0), 555);
+}
+
+// The history's memory (history_arena.h): what is allocated keeps its bytes; chunks go back
+// once everything in them is freed, oldest first as the history drops its oldest instants or
+// in any order, and the few kept come back for the next allocations.
+TEST(HistoryArena, ChunksGoWhenEmptyAndAFewComeBackForTheNext) {
+    HistoryArena arena;
+    constexpr std::size_t kPieces = 3000; // 4 KB each: 6 chunks and more
+    for (const bool oldestFirst : {true, false}) {
+        SCOPED_TRACE(oldestFirst);
+        std::vector<std::uint32_t *> pieces;
+        for (std::size_t k = 0; k < kPieces; ++k) {
+            auto *p = static_cast<std::uint32_t *>(arena.allocate(4096));
+            std::fill_n(p, 1024, static_cast<std::uint32_t>(k));
+            pieces.push_back(p);
+        }
+        EXPECT_GE(arena.chunksHeld(), 6u);
+        const std::size_t held = arena.chunksHeld();
+        for (std::size_t k = 0; k < kPieces; ++k)
+            ASSERT_EQ(pieces[k][1023], k);
+        for (std::size_t k = 0; k < kPieces; ++k)
+            arena.deallocate(pieces[oldestFirst ? k : kPieces - 1 - k], 4096);
+        EXPECT_LE(arena.chunksHeld(), 5u); // the current one and four kept
+        // The same again takes the chunks kept first.
+        for (std::size_t k = 0; k < kPieces; ++k)
+            pieces[k] = static_cast<std::uint32_t *>(arena.allocate(4096));
+        EXPECT_LE(arena.chunksHeld(), held + 1);
+        for (std::size_t k = 0; k < kPieces; ++k)
+            arena.deallocate(pieces[k], 4096);
+    }
+    // A large piece comes from the heap, not a chunk.
+    const std::size_t before = arena.chunksHeld();
+    void *large = arena.allocate(HistoryArena::kChunk);
+    EXPECT_EQ(arena.chunksHeld(), before);
+    arena.deallocate(large, HistoryArena::kChunk);
+}
+
+// A Host Link master (through a bridge, or here straight onto the port) forces a bit of the
+// CPM1 (KS, in MONITOR mode): the forced bit and its value are shown from that instant on,
+// though no command of the session's came between the slices.
+QByteArray hostLinkFrame(const char *text) {
+    QByteArray f = QByteArrayLiteral("@") + text;
+    quint8 fcs = 0;
+    for (const char c : f)
+        fcs ^= quint8(c);
+    return f + QByteArray::number(fcs, 16).rightJustified(2, '0').toUpper() + "*\r";
+}
+
+TEST(NetworkHistory, ABitAHostLinkMasterForcesIsRecordedForcedAtItsInstant) {
+    std::unique_ptr<Network> net = buildForHistory(
+        kHistoryExamples + QStringLiteral("/cpm1-host-link/cpm1-host-link.rungnet"));
+    ASSERT_TRUE(net);
+    Station &cpm1 = *net->station(QStringLiteral("cpm1"));
+    StationPort *port = cpm1.findPort(QStringLiteral("PERIPHERAL"));
+    ASSERT_TRUE(port);
+    ASSERT_EQ(hostLinkFrame("00KSCIO 001000"), QByteArray("@00KSCIO 0010003C*\r"));
+    const model::Address forced = historyAddress(cpm1, "010.00");
+    NetworkHistory history(NetworkHistory::Limits{256u << 20, 1000});
+    history.start(*net);
+    std::vector<LiveInstant> live{captureLive(*net)};
+    qint64 seen = -1;
+    for (int k = 1; k <= 120; ++k) {
+        if (k == 20)
+            port->deliver(hostLinkFrame("00SC02"), 0, net->nowUs()); // MONITOR
+        if (k == 50)
+            port->deliver(hostLinkFrame("00KSCIO 001000"), 0, net->nowUs());
+        net->runUntil(k * 10'000);
+        history.record(*net, false);
+        live.push_back(captureLive(*net));
+        if (seen < 0 && cpm1.engine().snapshot().forced(forced))
+            seen = net->nowUs();
+    }
+    ASSERT_GT(seen, 490'000);
+    expectHistoryShownAsLive(history, live);
+    const auto then = history.stationAt(0, seen);
+    const auto before = history.stationAt(0, seen - 1);
+    ASSERT_TRUE(then && before);
+    EXPECT_TRUE(then->forced(forced));
+    EXPECT_TRUE(then->bit(forced));
+    EXPECT_FALSE(before->forced(forced));
+}
+
+// An online edit (a command, between slices): from then on the words the new program writes
+// are recorded, not the old one's.
+TEST(NetworkHistory, TheWordsANewProgramWritesAreRecordedAfterAnOnlineEdit) {
+    std::unique_ptr<Network> net = busyNetwork();
+    ASSERT_TRUE(net);
+    Station &s1 = *net->station(QStringLiteral("s1"));
+    const model::Target &t = s1.target();
+    const model::ParseResult parsed = model::parseInstructionList(
+        t, QStringLiteral("; target: vigor\nLD M9000\nADD D5000 K3 D5000\nMOV D5000 D6001\nEND\n"),
+        s1.model());
+    ASSERT_TRUE(parsed.ok());
+    model::CheckOptions checks;
+    checks.model = s1.model();
+    const simulator::CompileResult edited = simulator::prepareProgram(parsed.list, checks);
+    ASSERT_TRUE(edited.ok());
+    NetworkHistory history(NetworkHistory::Limits{256u << 20, 1000});
+    history.start(*net);
+    std::vector<LiveInstant> live{captureLive(*net)};
+    for (int k = 1; k <= 100; ++k) {
+        if (k == 40) {
+            ASSERT_EQ(s1.engine().replaceProgram(edited.program), simulator::EditApplied::Now);
+            history.record(*net, true);
+            live.push_back(captureLive(*net));
+        }
+        net->runUntil(k * 10'000);
+        history.record(*net, false);
+        live.push_back(captureLive(*net));
+    }
+    EXPECT_GT(s1.engine().value(historyAddress(s1, "D6001")), 100);
+    expectHistoryShownAsLive(history, live);
+    expectWordValuesAsLive(history, live);
 }
 
 } // namespace rung::network::test
