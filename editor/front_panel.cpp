@@ -456,8 +456,11 @@ void FrontPanel::refresh() {
         caption = tr("Display mode %1 (%2)").arg(m_view.mode).arg(d.modeDevice);
     else if (snapshot && m_view.display == model::DisplayKind::Text && m_view.page > 0)
         caption = tr("Page %1 (%2)").arg(m_view.page).arg(d.pageShownDevice);
-    if (!m_view.note.isEmpty()) // says the mode or the page itself
-        caption = m_view.note;
+    // The note says the mode or that no page is shown in place of the caption; on a page shown
+    // it says what the page's values are (a system page's), below the page's number.
+    if (!m_view.note.isEmpty())
+        caption = m_view.page > 0 && !caption.isEmpty() ? caption + QLatin1Char('\n') + m_view.note
+                                                        : m_view.note;
     m_caption->setText(caption);
     m_caption->setVisible(!caption.isEmpty());
     m_display->setVisible(m_view.display != model::DisplayKind::None);

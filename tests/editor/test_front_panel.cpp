@@ -12,6 +12,7 @@
 #include <QDockWidget>
 
 #include <QDial>
+#include <QLabel>
 #include <QSpinBox>
 #include <QTest>
 #include <QToolButton>
@@ -396,6 +397,12 @@ TEST(FrontPanelView, Pl110SlaveAddressIsRefusedWithoutTheSystemPasswordAndSetWit
     ASSERT_EQ(f.panel.view().page, 3);
     EXPECT_EQ(f.panel.display()->text().split(QLatin1Char('\n')).value(5),
               QStringLiteral("SLAVE ADDRESS:      7"));
+    // The caption: the page's number, and below it what the page's values are.
+    const auto *caption = f.panel.findChild<QLabel *>(QStringLiteral("frontPanelCaption"));
+    ASSERT_NE(caption, nullptr);
+    EXPECT_TRUE(caption->text().startsWith(QStringLiteral("Page 3 (SM105)\n")))
+        << caption->text().toStdString();
+    EXPECT_TRUE(caption->text().contains(QStringLiteral("1357")));
     f.panel.setFocus();
     QTest::keyClick(&f.panel, Qt::Key_Return);
     EXPECT_EQ(f.panel.terminal().mode, model::TerminalState::Mode::Pages) << "refused";
