@@ -233,6 +233,9 @@ FrontPanel::FrontPanel(QWidget *parent)
     auto *scroll = new QScrollArea;
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    // A click on the display or beside the keys gives the panel the focus, not the scroll
+    // area: the arrow keys then press UP / DOWN instead of scrolling.
+    scroll->setFocusPolicy(Qt::NoFocus);
     m_parts = new QWidget;
     auto *parts = new QVBoxLayout(m_parts);
     parts->setContentsMargins(0, 0, 0, 0);

@@ -365,7 +365,10 @@ TEST(FrontPanelView, Pl110DisplaySetupDelayIsChangedWithTheKeys) {
     EXPECT_EQ(rows.value(0), QStringLiteral("*** DISPLAY SETUP ***"));
     EXPECT_EQ(rows.value(3), QStringLiteral("                OFF %"));
     EXPECT_EQ(rows.value(6), QStringLiteral("                2 min"));
-    f.panel.setFocus();
+    // A click on the display gives the panel the keyboard: the arrows are UP / DOWN there (the
+    // scroll area around the parts does not take them to scroll).
+    QTest::mouseClick(f.panel.display(), Qt::LeftButton);
+    ASSERT_EQ(f.panel.focusWidget(), &f.panel);
     QTest::keyClick(&f.panel, Qt::Key_Return); // the brightness
     ASSERT_EQ(f.panel.terminal().mode, model::TerminalState::Mode::Field);
     QTest::keyClick(&f.panel, Qt::Key_Return); // stored as it was; the delay
