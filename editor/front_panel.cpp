@@ -233,6 +233,9 @@ FrontPanel::FrontPanel(QWidget *parent)
     auto *scroll = new QScrollArea;
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    // A click on the display or beside the keys gives the panel the focus, not the scroll
+    // area: the arrow keys then press UP / DOWN instead of scrolling.
+    scroll->setFocusPolicy(Qt::NoFocus);
     m_parts = new QWidget;
     auto *parts = new QVBoxLayout(m_parts);
     parts->setContentsMargins(0, 0, 0, 0);
@@ -456,8 +459,11 @@ void FrontPanel::refresh() {
         caption = tr("Display mode %1 (%2)").arg(m_view.mode).arg(d.modeDevice);
     else if (snapshot && m_view.display == model::DisplayKind::Text && m_view.page > 0)
         caption = tr("Page %1 (%2)").arg(m_view.page).arg(d.pageShownDevice);
-    if (!m_view.note.isEmpty()) // says the mode or the page itself
-        caption = m_view.note;
+    // The note says the mode or that no page is shown in place of the caption; on a page shown
+    // it says what the page's values are (a system page's), below the page's number.
+    if (!m_view.note.isEmpty())
+        caption = m_view.page > 0 && !caption.isEmpty() ? caption + QLatin1Char('\n') + m_view.note
+                                                        : m_view.note;
     m_caption->setText(caption);
     m_caption->setVisible(!caption.isEmpty());
     m_display->setVisible(m_view.display != model::DisplayKind::None);

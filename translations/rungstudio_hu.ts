@@ -8618,9 +8618,19 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %1 által megnevezett regiszter (%2) nem létezik</translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+216"/>
         <source>No page is shown: the program enables none</source>
         <translation>Nincs megjelenített oldal: a program egyet sem engedélyez</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110_panel.cpp" line="+135"/>
+        <source>System info: the simulator has no BOOT or firmware version (shown as a dash); the slave address is SMW4, changed with the keys after the system password 1357</source>
+        <translation>Rendszerinformáció: a szimulátornak nincs BOOT- és firmware-verziója (kötőjel jelzi); a slave címe az SMW4, a gombokkal az 1357-es rendszerjelszó megadása után módosítható</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Date and time: the simulator&apos;s clock does not count; SM9..SM15 keep what the program or the keys write</source>
+        <translation>Dátum és idő: a szimulátor órája nem jár; az SM9..SM15 azt tartja, amit a program vagy a gombok beleírnak</translation>
     </message>
 </context>
 <context>
@@ -11062,7 +11072,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>világít, ha programhiba leállította a PLC-t</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_panel.cpp" line="+23"/>
+        <location filename="../model/target/target_pl110_panel.cpp" line="-120"/>
         <source>steady: the PLC is in RUN; slow blink (0.5 s on, 0.5 s off): no ladder program runs</source>
         <translation>folyamatosan világít: a PLC RUN üzemmódban van; lassan villog (0,5 s be, 0,5 s ki): nem fut létraprogram</translation>
     </message>

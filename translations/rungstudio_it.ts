@@ -8641,9 +8641,19 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il registro indicato da %1 (%2) non esiste</translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+216"/>
         <source>No page is shown: the program enables none</source>
         <translation>Nessuna pagina visualizzata: il programma non ne abilita alcuna</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110_panel.cpp" line="+135"/>
+        <source>System info: the simulator has no BOOT or firmware version (shown as a dash); the slave address is SMW4, changed with the keys after the system password 1357</source>
+        <translation>System info: il simulatore non ha versione del programma di BOOT né del firmware (indicate con un trattino); l&apos;indirizzo slave è SMW4, modificabile con i tasti previa immissione della password di sistema 1357</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Date and time: the simulator&apos;s clock does not count; SM9..SM15 keep what the program or the keys write</source>
+        <translation>Data e ora: l&apos;orologio interno del simulatore non conta; SM9..SM15 mantengono quanto scritto dal programma o dai tasti</translation>
     </message>
 </context>
 <context>
@@ -11085,7 +11095,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>acceso quando un errore di programma ha fermato il PLC</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_panel.cpp" line="+23"/>
+        <location filename="../model/target/target_pl110_panel.cpp" line="-120"/>
         <source>steady: the PLC is in RUN; slow blink (0.5 s on, 0.5 s off): no ladder program runs</source>
         <translation>acceso fisso: il PLC è in RUN; lampeggio lento (0,5 s on / 0,5 s off): nessun applicativo ladder in esecuzione</translation>
     </message>

@@ -44,21 +44,56 @@ std::pair<qint64, qint64> formatRange(int format) {
     return {-32768, 32767};
 }
 
-// The fields of the page shown that SET may edit now, in the table's order.
+// The fields of the page shown that SET may edit now, in the table's order: a user page's
+// four, or the numbers of the system page shown (PanelDisplay::systemFields, after the four).
 std::vector<int> editableFields(const Target &target, const Snapshot &snapshot) {
     const PanelDisplay &d = target.panel.display;
     std::vector<int> out;
     const qint64 page = terminalWord(target, snapshot, d.pageShownDevice);
-    if (page < d.firstUserPage || page >= d.firstUserPage + d.userPages)
+    const bool user = page >= d.firstUserPage && page < d.firstUserPage + d.userPages;
+    const bool system = page >= 1 && page <= d.systemPages;
+    if (!user && !system)
         return out;
-    const bool unlocked =
-        terminalWord(target, snapshot, d.passwordDevice) == d.userPassword && d.userPassword != 0;
-    for (int k = 0; k < static_cast<int>(d.fields.size()); ++k) {
+    const qint64 entered = terminalWord(target, snapshot, d.passwordDevice);
+    const int userFields = static_cast<int>(d.fields.size());
+    const int count = userFields + static_cast<int>(d.systemFields.size());
+    for (int k = 0; k < count; ++k) {
+        if (k < userFields
+                ? !user
+                : !system || d.systemFields[static_cast<std::size_t>(k - userFields)].page != page)
+            continue;
         const auto f = terminalField(target, snapshot, k);
-        if (f && f->state == 2 && f->variable && (f->access == 0 || unlocked))
+        if (f && f->state == 2 && f->variable &&
+            (f->access == 0 || (f->password != 0 && entered == f->password)))
             out.push_back(k);
     }
     return out;
+}
+
+// A system page's number as a field (PanelSystemField): its word named by SM107's list as a
+// user field's variable is, so that SET leaves the same note *(choice: 2.1.2 says "l'ultima
+// area di memoria salvata tramite il terminale" without telling the system pages apart)*.
+TerminalField systemField(const Target &target, const PanelSystemField &s) {
+    const PanelDisplay &d = target.panel.display;
+    TerminalField f;
+    f.state = s.editable ? 2 : 1;
+    f.variable = terminalDevice(target, s.device);
+    if (f.variable) {
+        const QString &key = target.areas[static_cast<std::size_t>(f.variable->area)].key;
+        for (const PanelAreaCode &c : d.areaCodes)
+            if (c.area == key && !c.doubles)
+                f.area = c.code;
+        f.number = f.variable->index;
+    }
+    f.lowest = s.lowest;
+    f.highest = s.highest;
+    f.digits = s.digits;
+    f.zeros = s.zeros;
+    f.row = s.row;
+    f.column = s.column;
+    f.access = s.password != 0 ? 1 : 0;
+    f.password = s.password;
+    return f;
 }
 
 qint64 power10(int n) {
@@ -90,7 +125,10 @@ void endEditing(TerminalState &s) {
 std::optional<TerminalField> terminalField(const Target &target, const Snapshot &snapshot,
                                            int index) {
     const PanelDisplay &d = target.panel.display;
-    if (index < 0 || index >= static_cast<int>(d.fields.size()))
+    const int userFields = static_cast<int>(d.fields.size());
+    if (index >= userFields && index < userFields + static_cast<int>(d.systemFields.size()))
+        return systemField(target, d.systemFields[static_cast<std::size_t>(index - userFields)]);
+    if (index < 0 || index >= userFields)
         return std::nullopt;
     const auto base = terminalDevice(target, d.fields[static_cast<std::size_t>(index)].first);
     if (!base)
@@ -117,6 +155,7 @@ std::optional<TerminalField> terminalField(const Target &target, const Snapshot 
     f.row = static_cast<int>(at(14));
     f.column = static_cast<int>(at(15));
     f.access = static_cast<int>(at(16));
+    f.password = d.userPassword;
     // A limit is a variable named as the field's own is ("Numero area minimo parametro");
     // area 0 names none, and then its number is the limit itself *(choice: the manual's
     // SetPAR writes "Min= #0, Max = #1400" without saying how a constant is coded)*.

@@ -7,8 +7,9 @@
 // the next field, after the last back to the page. SET held for about 2 s opens the password
 // page (253), where UP / DOWN change the digit SWAP chooses and SET enters the number into
 // the password word (SM109); a field of access 1 is edited only while that word holds the user
-// password (1234). And the standby: after SM101 minutes without a key or a page change the
-// display dims to SM100 %.
+// password (1234). The system pages' numbers (5.3) are edited the same way: the slave address
+// only while that word holds the system password (1357). And the standby: after SM101 minutes
+// without a key or a page change the display dims to SM100 %.
 //
 // The terminal's state is the front panel's (TerminalState): the keys still reach the program
 // through their bits (SM110) and the engine steps the pages on SWAP, but which field is edited
@@ -60,7 +61,9 @@ void terminalTick(const Target &target, const Snapshot &snapshot, TerminalState 
 // entered (it chooses the digit there, and the engine would step the page).
 bool terminalPassesKey(const TerminalState &state, PanelKeyRole role);
 
-// A field of the page as its words say (PL110 manual 2.1.2, from SM118 for the first).
+// A field of the page as its words say (PL110 manual 2.1.2, from SM118 for the first); from
+// index PanelDisplay::fields.size() on, the system pages' numbers (PanelDisplay::systemFields:
+// the slave address, the clock, the display setup) as the table gives them.
 struct TerminalField {
     int state = 0; // 0 disabled, 1 shown, 2 editable ("Modifica")
     std::optional<Address> variable;
@@ -72,9 +75,10 @@ struct TerminalField {
     int digits = 1;
     int decimals = 0;
     bool zeros = false;
-    int row = 0;    // 1-based, as the word holds it
-    int column = 0; // 1-based
-    int access = 0; // 0 free, 1 protected by the user password
+    int row = 0;      // 1-based, as the word holds it
+    int column = 0;   // 1-based
+    int access = 0;   // 0 free, 1 protected by the password
+    int password = 0; // access 1: the value the password word must hold (1234, 1357)
 };
 std::optional<TerminalField> terminalField(const Target &target, const Snapshot &snapshot,
                                            int index);

@@ -179,8 +179,42 @@ void putText(QString &line, int column, const QString &text) {
             line[column + k] = text[k];
 }
 
-// System pages 1 and 2 (PL110 manual 5.3): the digital inputs and outputs, "attive ... con un
-// quadratino pieno", and the analog inputs' values, from the model's terminal strip.
+// Where digit n (0: the units) of a formatted field stands in it, the decimal point skipped.
+int digitColumn(const QString &text, int n, int decimals) {
+    const int at = static_cast<int>(text.size()) - 1 - n - (decimals > 0 && n >= decimals ? 1 : 0);
+    return std::max(at, -1);
+}
+
+// The numbers of system page `page` (PanelDisplay::systemFields) at their places; the one the
+// keys edit shows the value being entered (model/image/panel_keys.h: their index follows the
+// user fields').
+void systemFieldsView(const Target &target, const PanelDisplay &d, const PanelInput &in, int page,
+                      PanelView &v) {
+    const TerminalState *keys = in.terminal;
+    for (std::size_t k = 0; k < d.systemFields.size(); ++k) {
+        const PanelSystemField &f = d.systemFields[k];
+        const auto device = panelDevice(target, f.device);
+        const int row = f.row - 1, column = f.column - 1;
+        if (f.page != page || !device || row < 0 || row >= v.lines.size() || column < 0 ||
+            column >= d.columns)
+            continue;
+        const int index = static_cast<int>(d.fields.size() + k);
+        const bool editing = keys && keys->mode == TerminalState::Mode::Field &&
+                             keys->field == index && keys->page == page;
+        const qint64 value = editing ? keys->value : readValue(in, v, *device);
+        const QString text = value == 0 && !f.zeroText.isEmpty()
+                                 ? f.zeroText.rightJustified(f.digits, QLatin1Char(' '))
+                                 : formatPanelField(value, f.digits, 0, f.zeros);
+        putText(v.lines[row], column, text);
+        const int length = static_cast<int>(std::min<qsizetype>(text.size(), d.columns - column));
+        const int cursor = editing && keys->digit >= 0 ? digitColumn(text, keys->digit, 0) : -1;
+        v.fields.push_back(
+            {row, column, length, f.editable, editing, cursor < length ? cursor : -1});
+    }
+}
+
+// The system pages (PL110 manual 5.3). Pages 1 and 2: the digital inputs and outputs, "attive ...
+// con un quadratino pieno", and the analog inputs' values, from the model's terminal strip.
 void systemPage(const Target &target, const ModelVariant *model, const PanelInput &in, int page,
                 PanelView &v) {
     const QString filled = QStringLiteral("\u25a0"), empty = QStringLiteral("\u25a1");
@@ -215,17 +249,17 @@ void systemPage(const Target &target, const ModelVariant *model, const PanelInpu
         }
         return;
     }
-    // Pages 3..5: system info, date and time, display setup. Their contents are the PLC's
-    // (versions, the clock) and not simulated: the page's title, as the manual names it.
-    static const char *const titles[] = {"SYSTEM INFO", "DATE & TIME", "DISPLAY SETUP"};
-    if (page >= 3 && page <= 5)
-        put(QString::fromLatin1(titles[page - 3]));
-}
-
-// Where digit n (0: the units) of a formatted field stands in it, the decimal point skipped.
-int digitColumn(const QString &text, int n, int decimals) {
-    const int at = static_cast<int>(text.size()) - 1 - n - (decimals > 0 && n >= decimals ? 1 : 0);
-    return std::max(at, -1);
+    // Pages 3..5 (5.3): the table's text and numbers (PanelDisplay::systemTexts, systemFields).
+    const PanelDisplay &d = target.panel.display;
+    for (const PanelSystemPage &text : d.systemTexts) {
+        if (text.page != page)
+            continue;
+        for (const QString &line : text.lines)
+            put(line);
+        if (text.note)
+            v.note = QCoreApplication::translate("rung::model::PanelView", text.note);
+    }
+    systemFieldsView(target, d, in, page, v);
 }
 
 void fieldsView(const Target &target, const PanelDisplay &d, const PanelInput &in, PanelView &v) {

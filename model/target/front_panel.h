@@ -94,6 +94,34 @@ struct PanelAreaCode {
     bool doubles = false; // the area's double words (VD, SMD)
 };
 
+// A number a system page shows (PL110 manual 5.3: the slave address, the clock, the display
+// setup): its word, where it stands (1-based, as a user field's row and column), how many
+// places. Editable ones the keys edit as they edit a user page's fields (model/image/
+// panel_keys.h), within `lowest`..`highest`, while the password word holds `password` (0:
+// free).
+struct PanelSystemField {
+    int page = 0;
+    QString device;
+    int row = 0;
+    int column = 0;
+    int digits = 1;
+    bool zeros = false; // fill with zeros (the clock's "09")
+    bool editable = false;
+    int lowest = 0;
+    int highest = 0;
+    int password = 0;
+    QString zeroText; // shown for 0 instead of the number, right-aligned ("OFF"); empty: none
+};
+
+// A system page's fixed text, row by row from the first (the device's own English words).
+struct PanelSystemPage {
+    int page = 0;
+    QStringList lines;
+    // Translated (QT_TRANSLATE_NOOP("rung::model::PanelView", ...)): what the page shows that
+    // the simulation does not have or does not do; null: nothing to say.
+    const char *note = nullptr;
+};
+
 struct PanelDisplay {
     DisplayKind kind = DisplayKind::None;
     // Digits: the mode word and the word naming the register shown; the register area.
@@ -144,6 +172,10 @@ struct PanelDisplay {
     // key; a delay of 0 turns it off); empty: the display is never dimmed.
     QString standbyBrightnessDevice;
     QString standbyDelayDevice;
+    // Text: the system pages' contents beyond the terminal strip's pages 1 and 2, and their
+    // numbers (PanelSystemField).
+    std::vector<PanelSystemPage> systemTexts;
+    std::vector<PanelSystemField> systemFields;
     // IoLines: the areas shown, in order, and how many to a line.
     std::vector<QString> lineAreas;
     int perLine = 16;

@@ -113,6 +113,75 @@ void addPl110Panel(Target &t) {
     d.standbyBrightnessDevice = QStringLiteral("SM100");
     d.standbyDelayDevice = QStringLiteral("SM101");
 
+    // The system pages 3..5 (5.3, "Descrizione pagine di sistema"). Page 3, system info: "la
+    // versione del programma di BOOT e del Firmware, il nome dell'applicazione ladder caricata,
+    // i protocolli associati alle porte seriali ed il numero dello slave ... Tale numero può
+    // essere modificato solo previa immissione della password di sistema 1357" (also 2.1.2
+    // SM109); the number is SMW4 (1.6.4: "INDIRIZZO MODULO = OFFSET INDIRIZZO (SMW4)", the
+    // PL110-2A has no rotary switch), within the station numbers of the ports' MODBUS slave
+    // (target_pl110_comm.cpp). The simulator has no BOOT or firmware version: a dash, no
+    // number. The application's name and the ports' protocols are not among what the panel is
+    // given (a snapshot of the PLC's memory): left out. Page 4, "data ed ora dell'orologio
+    // interno", SM9..SM15 (2.1.2) in their ranges. Page 5 as the manual's figure draws it
+    // ("*** DISPLAY SETUP ***", "STANDBY BRIGHTNESS", "OFF %", "STANDBY DELAY", "2 min"):
+    // SM100 in % ("default 0=OFF"), SM101 in minutes, every value of its word. The layout of
+    // pages 3 and 4 is not in the manual: the values plainly, one to a row *(choice)*.
+    d.systemTexts = {
+        {3,
+         {QStringLiteral("SYSTEM INFO"), QString(),
+          QStringLiteral("BOOT") + QString(16, QLatin1Char(' ')) + QChar(0x2014),
+          QStringLiteral("FIRMWARE") + QString(12, QLatin1Char(' ')) + QChar(0x2014), QString(),
+          QStringLiteral("SLAVE ADDRESS:")},
+         QT_TRANSLATE_NOOP("rung::model::PanelView",
+                           "System info: the simulator has no BOOT or firmware version (shown "
+                           "as a dash); the slave address is SMW4, changed with the keys after "
+                           "the system password 1357")},
+        {4,
+         {QStringLiteral("DATE & TIME"), QString(), QStringLiteral("DATE           /  /"),
+          QString(), QStringLiteral("TIME           :  :"), QString(),
+          QStringLiteral("DAY OF WEEK")},
+         QT_TRANSLATE_NOOP("rung::model::PanelView",
+                           "Date and time: the simulator's clock does not count; SM9..SM15 keep "
+                           "what the program or the keys write")},
+        {5,
+         {QStringLiteral("*** DISPLAY SETUP ***"), QString(), QStringLiteral("STANDBY BRIGHTNESS"),
+          QStringLiteral("                    %"), QString(), QStringLiteral("STANDBY DELAY"),
+          QStringLiteral("                  min")},
+         nullptr},
+    };
+    const auto number = [](int page, const char *device, int row, int column, int digits,
+                           int lowest, int highest, int password = 0) {
+        PanelSystemField f;
+        f.page = page;
+        f.device = QString::fromLatin1(device);
+        f.row = row;
+        f.column = column;
+        f.digits = digits;
+        f.editable = true;
+        f.lowest = lowest;
+        f.highest = highest;
+        f.password = password;
+        return f;
+    };
+    d.systemFields = {
+        number(3, "SM4", 6, 19, 3, 1, 255, 1357),
+        // DD/MM/YY, hh:mm:ss, the day of the week 0 (Sunday) .. 6.
+        number(4, "SM12", 3, 14, 2, 1, 31),
+        number(4, "SM13", 3, 17, 2, 1, 12),
+        number(4, "SM14", 3, 20, 2, 0, 99),
+        number(4, "SM11", 5, 14, 2, 0, 23),
+        number(4, "SM10", 5, 17, 2, 0, 59),
+        number(4, "SM9", 5, 20, 2, 0, 59),
+        number(4, "SM15", 7, 21, 1, 0, 6),
+        number(5, "SM100", 4, 17, 3, 0, 100),
+        number(5, "SM101", 7, 13, 5, 0, 32767),
+    };
+    for (PanelSystemField &f : d.systemFields) {
+        f.zeros = f.page == 4;
+        if (f.device == QLatin1String("SM100"))
+            f.zeroText = QStringLiteral("OFF");
+    }
+
     // The defaults of 2.1.2's table: SM101 2 minutes, SM102 31 (every system page), SM104 page
     // 1, each field one digit at rows 2, 4, 6, 8, column 15.
     p.powerOn = {

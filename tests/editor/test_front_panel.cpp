@@ -12,6 +12,7 @@
 #include <QDockWidget>
 
 #include <QDial>
+#include <QLabel>
 #include <QSpinBox>
 #include <QTest>
 #include <QToolButton>
@@ -348,4 +349,95 @@ TEST(FrontPanelView, Pl110SetHeldOpensThePasswordPageAndSetEntersIt) {
     EXPECT_EQ(f.value("SM109"), 1100);
     EXPECT_EQ(f.value("V5"), 1100);
     EXPECT_EQ(f.panel.view().page, 1);
+}
+
+// 5.3, page 5 "DISPLAY SETUP": the standby's brightness (SM100) and delay (SM101, "default 2")
+// set with the keys as a user page's fields are: SET edits the brightness, SET stores it and
+// edits the delay, UP three times, SET stores 5 minutes into SM101, which the program reads.
+TEST(FrontPanelView, Pl110DisplaySetupDelayIsChangedWithTheKeys) {
+    PanelFixture f;
+    f.start(rung::testing::pl110(), QStringLiteral("PL110-2A"),
+            "LD SM0.1\nMOV 5 SM104\nLD SM0.0\nMOV SM101 V1\nEND\n");
+    f.scan();
+    f.scan();
+    ASSERT_EQ(f.panel.view().page, 5);
+    QStringList rows = f.panel.display()->text().split(QLatin1Char('\n'));
+    EXPECT_EQ(rows.value(0), QStringLiteral("*** DISPLAY SETUP ***"));
+    EXPECT_EQ(rows.value(3), QStringLiteral("                OFF %"));
+    EXPECT_EQ(rows.value(6), QStringLiteral("                2 min"));
+    // A click on the display gives the panel the keyboard: the arrows are UP / DOWN there (the
+    // scroll area around the parts does not take them to scroll).
+    QTest::mouseClick(f.panel.display(), Qt::LeftButton);
+    ASSERT_EQ(f.panel.focusWidget(), &f.panel);
+    QTest::keyClick(&f.panel, Qt::Key_Return); // the brightness
+    ASSERT_EQ(f.panel.terminal().mode, model::TerminalState::Mode::Field);
+    QTest::keyClick(&f.panel, Qt::Key_Return); // stored as it was; the delay
+    ASSERT_EQ(f.panel.terminal().mode, model::TerminalState::Mode::Field);
+    for (int k = 0; k < 3; ++k)
+        QTest::keyClick(&f.panel, Qt::Key_Up);
+    rows = f.panel.display()->text().split(QLatin1Char('\n'));
+    EXPECT_EQ(rows.value(6), QStringLiteral("                5 min"));
+    f.scan();
+    EXPECT_EQ(f.value("SM101"), 2) << "not stored before SET";
+    QTest::keyClick(&f.panel, Qt::Key_Return);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(f.value("SM101"), 5);
+    EXPECT_EQ(f.value("V1"), 5) << "the program reads it";
+    EXPECT_EQ(f.value("SM100"), 0);
+    EXPECT_EQ(f.panel.terminal().mode, model::TerminalState::Mode::Pages);
+}
+
+// 5.3, page 3: the slave number (SMW4, 1.6.4) "può essere modificato solo previa immissione
+// della password di sistema 1357": SET does nothing until the password page (SET held, 5.5)
+// has entered 1357; then UP and SET store it.
+TEST(FrontPanelView, Pl110SlaveAddressIsRefusedWithoutTheSystemPasswordAndSetWithIt) {
+    PanelFixture f;
+    f.start(rung::testing::pl110(), QStringLiteral("PL110-2A"),
+            "LD SM0.1\nMOV 3 SM104\nLD SM0.1\nMOV 7 SM4\nEND\n");
+    f.scan();
+    f.scan();
+    ASSERT_EQ(f.panel.view().page, 3);
+    EXPECT_EQ(f.panel.display()->text().split(QLatin1Char('\n')).value(5),
+              QStringLiteral("SLAVE ADDRESS:      7"));
+    // The caption: the page's number, and below it what the page's values are.
+    const auto *caption = f.panel.findChild<QLabel *>(QStringLiteral("frontPanelCaption"));
+    ASSERT_NE(caption, nullptr);
+    EXPECT_TRUE(caption->text().startsWith(QStringLiteral("Page 3 (SM105)\n")))
+        << caption->text().toStdString();
+    EXPECT_TRUE(caption->text().contains(QStringLiteral("1357")));
+    f.panel.setFocus();
+    QTest::keyClick(&f.panel, Qt::Key_Return);
+    EXPECT_EQ(f.panel.terminal().mode, model::TerminalState::Mode::Pages) << "refused";
+    QTest::keyClick(&f.panel, Qt::Key_Up);
+    f.scan();
+    EXPECT_EQ(f.value("SM4"), 7);
+    // The password page: SET held.
+    QToolButton *set = f.panel.key(QStringLiteral("SET"));
+    ASSERT_NE(set, nullptr);
+    QTest::mousePress(set, Qt::LeftButton);
+    ASSERT_TRUE(eventually(
+        [&] { return f.panel.terminal().mode == model::TerminalState::Mode::Password; }, 10000));
+    QTest::mouseRelease(set, Qt::LeftButton);
+    f.panel.setFocus();
+    for (const int digit : {1, 3, 5, 7}) {
+        for (int k = 0; k < digit; ++k)
+            QTest::keyClick(&f.panel, Qt::Key_Up);
+        QTest::keyClick(&f.panel, Qt::Key_S); // the next digit
+    }
+    EXPECT_TRUE(f.panel.display()->text().contains(QStringLiteral("1357")));
+    QTest::keyClick(&f.panel, Qt::Key_Return);
+    f.settle();
+    f.scan();
+    ASSERT_EQ(f.value("SM109"), 1357);
+    ASSERT_EQ(f.panel.view().page, 3);
+    QTest::keyClick(&f.panel, Qt::Key_Return);
+    ASSERT_EQ(f.panel.terminal().mode, model::TerminalState::Mode::Field) << "accepted";
+    QTest::keyClick(&f.panel, Qt::Key_Up);
+    QTest::keyClick(&f.panel, Qt::Key_Return);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(f.value("SM4"), 8);
+    EXPECT_EQ(f.panel.display()->text().split(QLatin1Char('\n')).value(5),
+              QStringLiteral("SLAVE ADDRESS:      8"));
 }

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace rung;
 using rung::model::MonitorSource;
 
@@ -230,6 +232,66 @@ TEST(FrontPanel, Pl110SystemPagesShowTheTerminals) {
     image.set("AI3", 1023);
     v = image.view(MonitorSource::RunState::Running, "PL110-2A");
     EXPECT_EQ(v.lines[2].trimmed(), QStringLiteral("AI3     1023"));
+}
+
+// 5.3, page 3: "la versione del programma di BOOT e del Firmware ... ed il numero dello slave";
+// 1.6.4: "INDIRIZZO MODULO = OFFSET INDIRIZZO (SMW4)". The simulator has no version: a dash,
+// no number, and the note says so.
+TEST(FrontPanel, Pl110SystemInfoShowsTheSlaveAddressAndNoInventedVersion) {
+    PanelImage image(rung::testing::pl110());
+    image.set("SM105", 3);
+    image.set("SM4", 17);
+    const model::PanelView v = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    ASSERT_EQ(v.lines.size(), 8);
+    EXPECT_EQ(v.lines[0].trimmed(), QStringLiteral("SYSTEM INFO"));
+    EXPECT_EQ(v.lines[2], QStringLiteral("BOOT                \u2014"));
+    EXPECT_EQ(v.lines[3], QStringLiteral("FIRMWARE            \u2014"));
+    EXPECT_EQ(v.lines[5], QStringLiteral("SLAVE ADDRESS:     17"));
+    ASSERT_EQ(v.fields.size(), 1u);
+    EXPECT_TRUE(v.fields[0].editable);
+    EXPECT_FALSE(v.fields[0].editing);
+    EXPECT_NE(std::find(v.devices.begin(), v.devices.end(), image.at("SM4")), v.devices.end());
+    EXPECT_TRUE(v.note.contains(QStringLiteral("1357"))) << v.note.toStdString();
+}
+
+// 5.3, page 4: "data ed ora dell'orologio interno", SM9..SM15 (2.1.2), which the simulator keeps
+// as the program writes them: shown plainly, and the note says the clock does not count.
+TEST(FrontPanel, Pl110DateAndTimeShowTheClockWordsPlainly) {
+    PanelImage image(rung::testing::pl110());
+    image.set("SM105", 4);
+    image.set("SM9", 0);
+    image.set("SM10", 5);
+    image.set("SM11", 7);
+    image.set("SM12", 9);
+    image.set("SM13", 3);
+    image.set("SM14", 26);
+    image.set("SM15", 0); // "0=Domenica"
+    const model::PanelView v = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    EXPECT_EQ(v.lines[0].trimmed(), QStringLiteral("DATE & TIME"));
+    EXPECT_EQ(v.lines[2], QStringLiteral("DATE         09/03/26"));
+    EXPECT_EQ(v.lines[4], QStringLiteral("TIME         07:05:00"));
+    EXPECT_EQ(v.lines[6], QStringLiteral("DAY OF WEEK         0"));
+    EXPECT_TRUE(v.note.contains(QStringLiteral("does not count"))) << v.note.toStdString();
+}
+
+// 5.3, page 5 as the manual's figure draws it: "*** DISPLAY SETUP ***", "STANDBY BRIGHTNESS",
+// "OFF %", "STANDBY DELAY", "2 min" (2.1.2: SM100 "default 0=OFF", SM101 "default 2").
+TEST(FrontPanel, Pl110DisplaySetupAsTheManualDrawsIt) {
+    PanelImage image(rung::testing::pl110());
+    image.set("SM105", 5);
+    image.set("SM101", 2);
+    model::PanelView v = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    EXPECT_EQ(v.lines[0], QStringLiteral("*** DISPLAY SETUP ***"));
+    EXPECT_EQ(v.lines[2].trimmed(), QStringLiteral("STANDBY BRIGHTNESS"));
+    EXPECT_EQ(v.lines[3], QStringLiteral("                OFF %"));
+    EXPECT_EQ(v.lines[5].trimmed(), QStringLiteral("STANDBY DELAY"));
+    EXPECT_EQ(v.lines[6], QStringLiteral("                2 min"));
+    EXPECT_TRUE(v.note.isEmpty());
+    image.set("SM100", 40);
+    image.set("SM101", 15);
+    v = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    EXPECT_EQ(v.lines[3], QStringLiteral("                 40 %"));
+    EXPECT_EQ(v.lines[6], QStringLiteral("               15 min"));
 }
 
 // 1.2: "Terminale con display OLED e tasti. (solo modello PL110-2A)": the PL110-1A has the
@@ -615,4 +677,75 @@ TEST(FrontPanelKeys, Pl110StandbyDimsAfterTheDelayAndAKeyOrAPageWakesIt) {
     t.image.set("SM101", 0);
     t.image.snapshot.statistics.timeMs = 10000000;
     EXPECT_EQ(t.view().brightness, 100);
+}
+
+// 5.3, page 3: the slave number "può essere modificato solo previa immissione della password di
+// sistema 1357" (2.1.2 SM109: "per impostare il parametro SLAVE ADDRESS da terminale, è
+// necessario immettere la password di sistema 1357"): the user password does not do.
+TEST(FrontPanelKeys, Pl110SlaveAddressOnlyAfterTheSystemPassword) {
+    Terminal t;
+    t.image.set("SM105", 3);
+    t.image.set("SM4", 1);
+    EXPECT_TRUE(t.press(Role::Set).empty());
+    EXPECT_EQ(t.state.mode, Mode::Pages) << "no password";
+    t.image.set("SM109", 1234);
+    EXPECT_TRUE(t.press(Role::Set).empty());
+    EXPECT_EQ(t.state.mode, Mode::Pages) << "the user password";
+    t.image.set("SM109", 1357);
+    t.press(Role::Set);
+    ASSERT_EQ(t.state.mode, Mode::Field);
+    t.press(Role::Up);
+    t.press(Role::Up);
+    model::PanelView v = t.view();
+    EXPECT_EQ(v.lines[5], QStringLiteral("SLAVE ADDRESS:      3"));
+    ASSERT_EQ(v.fields.size(), 1u);
+    EXPECT_TRUE(v.fields[0].editing);
+    const auto writes = t.press(Role::Set);
+    // Stored as a user field's variable, with the note (SM is area 2 of SM107's list).
+    ASSERT_EQ(writes.size(), 3u);
+    EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("SM4"), 3}));
+    EXPECT_EQ(writes[1], (model::TerminalWrite{t.at("SM107"), 2}));
+    EXPECT_EQ(writes[2], (model::TerminalWrite{t.at("SM108"), 4}));
+    EXPECT_EQ(t.state.mode, Mode::Pages);
+}
+
+// 5.3, page 5: "è possibile visualizzare ed impostare" the standby's brightness (SM100, in %)
+// and delay (SM101, minutes): SET edits the first, stores it and edits the second.
+TEST(FrontPanelKeys, Pl110DisplaySetupIsSetWithTheKeys) {
+    Terminal t;
+    t.image.set("SM105", 5);
+    t.image.set("SM100", 99);
+    t.image.set("SM101", 2);
+    t.press(Role::Set);
+    ASSERT_EQ(t.state.mode, Mode::Field);
+    t.press(Role::Up);
+    t.press(Role::Up); // not beyond 100 %
+    EXPECT_EQ(t.view().lines[3], QStringLiteral("                100 %"));
+    auto writes = t.press(Role::Set);
+    ASSERT_FALSE(writes.empty());
+    EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("SM100"), 100}));
+    ASSERT_EQ(t.state.mode, Mode::Field);
+    t.press(Role::Swap); // the units
+    t.press(Role::Swap); // the tens
+    t.press(Role::Up);
+    EXPECT_EQ(t.view().lines[6], QStringLiteral("               12 min"));
+    writes = t.press(Role::Set);
+    ASSERT_FALSE(writes.empty());
+    EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("SM101"), 12}));
+    EXPECT_EQ(t.state.mode, Mode::Pages);
+}
+
+// 5.3, page 4: "è possibile visualizzare e modificare data ed ora": the day first, within 1..31.
+TEST(FrontPanelKeys, Pl110TheClockIsSetWithTheKeys) {
+    Terminal t;
+    t.image.set("SM105", 4);
+    t.image.set("SM12", 31);
+    t.press(Role::Set);
+    ASSERT_EQ(t.state.mode, Mode::Field);
+    t.press(Role::Up); // not beyond 31
+    t.press(Role::Down);
+    const auto writes = t.press(Role::Set);
+    ASSERT_FALSE(writes.empty());
+    EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("SM12"), 30}));
+    EXPECT_EQ(t.state.mode, Mode::Field) << "then the month";
 }
