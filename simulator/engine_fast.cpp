@@ -428,14 +428,19 @@ opSlow : {
         ++f;                                                                                       \
         RUNG_NEXT();                                                                               \
     } while (false)
-// The block stack's bound, as LD and ANB keep it (the compiler never comes near it).
-#define RUNG_PARALLEL_AND(C)                                                                       \
+// The block stack's bound, as LD and ANB / ORB keep it (the compiler never comes near it): at
+// the bound the run goes step by step from its LD.
+#define RUNG_BLOCK_BOUND()                                                                         \
     do {                                                                                           \
         if (Guarded && bsp >= kBlockStack) [[unlikely]] {                                          \
             if (f->flip)                                                                           \
                 goto opLoadNot;                                                                    \
             goto opLoad;                                                                           \
         }                                                                                          \
+    } while (false)
+#define RUNG_PARALLEL_AND(C)                                                                       \
+    do {                                                                                           \
+        RUNG_BLOCK_BOUND();                                                                        \
         const bool a = C(f[0]) & RUNG_GATE;                                                        \
         const bool branch = a | (C(f[1]) & RUNG_GATE);                                             \
         if constexpr (Record) {                                                                    \
@@ -448,11 +453,7 @@ opSlow : {
     } while (false)
 #define RUNG_SERIES_OR(C)                                                                          \
     do {                                                                                           \
-        if (Guarded && bsp >= kBlockStack) [[unlikely]] {                                          \
-            if (f->flip)                                                                           \
-                goto opLoadNot;                                                                    \
-            goto opLoad;                                                                           \
-        }                                                                                          \
+        RUNG_BLOCK_BOUND();                                                                        \
         const bool a = C(f[0]) & RUNG_GATE;                                                        \
         const bool series = a & C(f[1]);                                                           \
         if constexpr (Record) {                                                                    \
@@ -511,6 +512,7 @@ opBranchOutNotP:
 #undef RUNG_SERIES_AND2
 #undef RUNG_PARALLEL_AND
 #undef RUNG_SERIES_OR
+#undef RUNG_BLOCK_BOUND
 #undef RUNG_BRANCH_OUT
 opTimerFull:
     timer(stepOf(*f), at(), acc, pass);

@@ -264,9 +264,9 @@ TEST(TrafficDecode, ModbusRequestsRepliesAndExceptions) {
     }
 }
 
-// ../shared/spec/protocols.md, "Omron CPM1 Host Link (C-mode)": its test vectors (unit 00)
-// verbatim, each read as the command it is, for the CPM1 on the wire, with the address as the
-// CPM1's device beside the four digits on the wire.
+// The Host Link command examples of the Omron CPM1/SRM1 programming manual W353 (Host Link, unit
+// 00) verbatim, as test_host_link.cpp has them, each read as the command it is, for the CPM1 on the
+// wire, with the address as the CPM1's device beside the four digits on the wire.
 TEST(TrafficDecode, HostLinkVectorsOfTheSpec) {
     const NetRun run = runNetwork(kHostAndCpm1, kCpm1);
     ASSERT_TRUE(run.net) << run.error.toStdString();

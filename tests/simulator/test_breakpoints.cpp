@@ -5,7 +5,7 @@
 
 #include "sim_test_target.h"
 
-#include "tests/model/random_program.h"
+#include "tests/simulator/random_programs.h"
 
 #include "model/target/address.h"
 #include "simulator/online_edit.h"
@@ -251,20 +251,10 @@ TEST(Breakpoints, AdvanceToReplaysAStopAtTheSameInstruction) {
 // Random programs of every family: a scan broken at breakpoints every few instructions, and
 // one stepped instruction by instruction, leave exactly the image of the unbroken scan.
 TEST(Breakpoints, BrokenAndSteppedScansEqualThePlainScanOnRandomPrograms) {
-    for (const model::Family family :
-         {model::Family::Vpc, model::Family::Vigor, model::Family::Cpm1, model::Family::Pl110}) {
-        const model::Target &t = model::Target::get(family);
-        for (std::uint64_t seed = 1; seed <= 25; ++seed) {
-            rung::testing::RandomProgramOptions o;
-            o.rungs = 6;
-            o.extended = true;
-            const QString text = rung::testing::randomProgram(t, seed, o);
-            SCOPED_TRACE(
-                QStringLiteral("%1 seed %2\n%3").arg(t.id).arg(seed).arg(text).toStdString());
-            const model::ParseResult parsed = model::parseInstructionList(t, text);
-            ASSERT_TRUE(parsed.ok());
-            const CompileResult compiled = compileProgram(parsed.list);
-            ASSERT_TRUE(compiled.ok());
+    test::forEachRandomProgram(
+        25, 6,
+        [](const model::Target &t, const model::InstructionList &list,
+           const CompileResult &compiled, unsigned seed) {
             Engine plain(compiled.program);
             Engine broken(compiled.program);
             Engine stepped(compiled.program);
@@ -273,12 +263,7 @@ TEST(Breakpoints, BrokenAndSteppedScansEqualThePlainScanOnRandomPrograms) {
                  i < static_cast<int>(compiled.program->steps.size()); i += 3)
                 every.push_back(at(i));
             ASSERT_TRUE(broken.setBreakpoints(every));
-            std::vector<model::Address> inputs;
-            for (const model::Instruction &ins : parsed.list.instructions)
-                for (const model::Operand &op : ins.operands)
-                    if (op.kind == model::Operand::Kind::Device &&
-                        t.area(op.address.area).physical && !t.area(op.address.area).writable)
-                        inputs.push_back(op.address);
+            const std::vector<model::Address> inputs = test::inputsOf(t, list);
             std::mt19937_64 rng(seed);
             for (int scan = 0; scan < 20; ++scan) {
                 for (const model::Address &in : inputs) {
@@ -295,8 +280,7 @@ TEST(Breakpoints, BrokenAndSteppedScansEqualThePlainScanOnRandomPrograms) {
                 ASSERT_EQ(test::image(broken), test::image(plain)) << "scan " << scan;
                 ASSERT_EQ(test::image(stepped), test::image(plain)) << "scan " << scan;
             }
-        }
-    }
+        });
 }
 
 TEST(OnlineEdit, ACounterKeepsItsValueAndTheNewProgramRuns) {

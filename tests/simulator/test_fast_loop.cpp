@@ -4,10 +4,10 @@
 // hands to the full interpreter. The reference is the engine stepped one instruction at a
 // time (stepInstruction), which never runs the fast loop.
 
+#include "random_programs.h"
 #include "sim_test_target.h"
 
 #include "tests/benchmarks/mixed_program.h"
-#include "tests/model/random_program.h"
 
 #include "model/convert/convert.h"
 #include "model/project/project.h"
@@ -71,44 +71,16 @@ void expectSameScans(const std::shared_ptr<const Program> &program,
     }
 }
 
-std::vector<model::Address> inputsOf(const model::Target &t, const model::InstructionList &list,
-                                     std::vector<model::Address> *written = nullptr) {
-    std::vector<model::Address> inputs;
-    for (const model::Instruction &ins : list.instructions)
-        for (const model::Operand &op : ins.operands) {
-            if (op.kind != model::Operand::Kind::Device)
-                continue;
-            const model::Area &area = t.area(op.address.area);
-            if (area.physical && !area.writable)
-                inputs.push_back(op.address);
-            else if (written && area.kind == model::AreaKind::Bit)
-                written->push_back(op.address);
-        }
-    return inputs;
-}
-
 } // namespace
 
 TEST(FastLoop, RandomProgramsOfEveryFamilyScanAsTheFullInterpreter) {
-    for (const model::Family family :
-         {model::Family::Vpc, model::Family::Vigor, model::Family::Cpm1, model::Family::Pl110}) {
-        const model::Target &t = model::Target::get(family);
-        for (std::uint64_t seed = 1; seed <= 30; ++seed) {
-            rung::testing::RandomProgramOptions o;
-            o.rungs = 10;
-            o.extended = true;
-            const QString text = rung::testing::randomProgram(t, seed, o);
-            SCOPED_TRACE(
-                QStringLiteral("%1 seed %2\n%3").arg(t.id).arg(seed).arg(text).toStdString());
-            const model::ParseResult parsed = model::parseInstructionList(t, text);
-            ASSERT_TRUE(parsed.ok());
-            const CompileResult compiled = compileProgram(parsed.list);
-            ASSERT_TRUE(compiled.ok());
-            std::vector<model::Address> written;
-            const auto inputs = inputsOf(t, parsed.list, &written);
-            expectSameScans(compiled.program, inputs, written, 40, static_cast<unsigned>(seed));
-        }
-    }
+    test::forEachRandomProgram(30, 10,
+                               [](const model::Target &t, const model::InstructionList &list,
+                                  const CompileResult &compiled, unsigned seed) {
+                                   std::vector<model::Address> written;
+                                   const auto inputs = test::inputsOf(t, list, &written);
+                                   expectSameScans(compiled.program, inputs, written, 40, seed);
+                               });
 }
 
 // What the random programs do not write: SET / RST of bits, words, timers and counters, the
@@ -208,7 +180,7 @@ TEST(FastLoop, ConstantTimersCountersAndOneContactRungsScanAsTheFullInterpreter)
           FastOp::LoadStartMoveWord16, FastOp::LoadStartMoveConst16, FastOp::LoadStartOut})
         EXPECT_NE(std::find(ops.begin(), ops.end(), op), ops.end()) << int(op);
     std::vector<model::Address> written;
-    const auto inputs = inputsOf(vigor, parsed.list, &written);
+    const auto inputs = test::inputsOf(vigor, parsed.list, &written);
     expectSameScans(compiled.program, inputs, written, 600, 17, 3);
 
     // An output branch into a negated coil (OUTN, a family that has it).
@@ -342,7 +314,7 @@ TEST(FastLoop, EveryExampleProjectScansAsTheFullInterpreter) {
         const CompileResult compiled = compileProgram(listing.list);
         ASSERT_TRUE(compiled.ok());
         std::vector<model::Address> written;
-        const auto inputs = inputsOf(*project->target, listing.list, &written);
+        const auto inputs = test::inputsOf(*project->target, listing.list, &written);
         expectSameScans(compiled.program, inputs, written, 400, 11);
         ++examples;
     }

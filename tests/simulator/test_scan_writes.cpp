@@ -7,7 +7,8 @@
 #include "simulator/engine.h"
 #include "simulator/scan_writes.h"
 
-#include "tests/model/random_program.h"
+#include "tests/benchmarks/network_program.h"
+#include "tests/simulator/random_programs.h"
 
 #include "model/convert/convert.h"
 #include "model/listing/il.h"
@@ -26,20 +27,6 @@
 namespace rung::simulator {
 
 namespace {
-
-std::vector<model::Address> inputsOfList(const model::Target &t,
-                                         const model::InstructionList &list) {
-    std::vector<model::Address> inputs;
-    for (const model::Instruction &ins : list.instructions)
-        for (const model::Operand &op : ins.operands) {
-            if (op.kind != model::Operand::Kind::Device)
-                continue;
-            const model::Area &area = t.area(op.address.area);
-            if (area.physical && !area.writable)
-                inputs.push_back(op.address);
-        }
-    return inputs;
-}
 
 bool inRanges(const WordRanges &ranges, std::size_t word) {
     for (const auto &[b, e] : ranges)
@@ -90,24 +77,12 @@ QString readText(const QString &path) {
 
 TEST(ScanWrites, EveryWordARandomProgramOfEveryFamilyChangesIsAmongThem) {
     std::size_t changed = 0;
-    for (const model::Family family :
-         {model::Family::Vpc, model::Family::Vigor, model::Family::Cpm1, model::Family::Pl110}) {
-        const model::Target &t = model::Target::get(family);
-        for (std::uint64_t seed = 1; seed <= 30; ++seed) {
-            rung::testing::RandomProgramOptions o;
-            o.rungs = 10;
-            o.extended = true;
-            const QString text = rung::testing::randomProgram(t, seed, o);
-            SCOPED_TRACE(
-                QStringLiteral("%1 seed %2\n%3").arg(t.id).arg(seed).arg(text).toStdString());
-            const model::ParseResult parsed = model::parseInstructionList(t, text);
-            ASSERT_TRUE(parsed.ok());
-            const CompileResult compiled = compileProgram(parsed.list);
-            ASSERT_TRUE(compiled.ok());
-            changed += expectScansWriteOnlyTheirWords(
-                compiled.program, inputsOfList(t, parsed.list), 60, static_cast<unsigned>(seed));
-        }
-    }
+    test::forEachRandomProgram(30, 10,
+                               [&](const model::Target &t, const model::InstructionList &list,
+                                   const CompileResult &compiled, unsigned seed) {
+                                   changed += expectScansWriteOnlyTheirWords(
+                                       compiled.program, test::inputsOf(t, list), 60, seed);
+                               });
     EXPECT_GT(changed, 1000u);
 }
 
@@ -133,7 +108,7 @@ TEST(ScanWrites, EveryWordAManualsExampleChangesIsAmongThem) {
             ++programs;
             if (scanWrites(*compiled.program))
                 ++checked;
-            expectScansWriteOnlyTheirWords(compiled.program, inputsOfList(*t, parsed.list), 300,
+            expectScansWriteOnlyTheirWords(compiled.program, test::inputsOf(*t, parsed.list), 300,
                                            static_cast<unsigned>(programs));
         }
     }
@@ -157,30 +132,19 @@ TEST(ScanWrites, EveryWordAnExampleProjectChangesIsAmongThem) {
         const CompileResult compiled = compileProgram(listing.list);
         ASSERT_TRUE(compiled.ok());
         changed += expectScansWriteOnlyTheirWords(
-            compiled.program, inputsOfList(*project->target, listing.list), 400, 11);
+            compiled.program, test::inputsOf(*project->target, listing.list), 400, 11);
         ++examples;
     }
     EXPECT_GE(examples, 10);
     EXPECT_GT(changed, 100u);
 }
 
-// What the history gains: the benchmark network's program (bench_network.cpp, 59 rungs of
-// contacts, a coil, a move and an addition) writes its coils, 59 registers and the system
-// devices, a few hundred words of a Vigor VB's ten thousand.
+// What the history gains: the benchmark network's program (tests/benchmarks/network_program.h,
+// 59 rungs of contacts, a coil, a move and an addition) writes its coils, 59 registers and the
+// system devices, a few hundred words of a Vigor VB's ten thousand.
 TEST(ScanWrites, AProgramOfCoilsMovesAndAdditionsWritesAFewRangesNotTheImage) {
     const model::Target &t = *model::Target::byId(QStringLiteral("vigor"));
-    QString text = QStringLiteral("; target: vigor\n");
-    for (int r = 0; r < 59; ++r)
-        text += QStringLiteral("LD X%1\nAND M%2\nOR M%3\nOUT Y%4\nLD M9000\nMOV D%5 D%6\n"
-                               "ADD D%6 K1 D%7\n")
-                    .arg(QString::number(r % 8, 8))
-                    .arg(r + 100)
-                    .arg(r + 200)
-                    .arg(QString::number(r % 16, 8))
-                    .arg(r % 4)
-                    .arg(100 + r)
-                    .arg(300 + r);
-    text += QStringLiteral("END\n");
+    const QString text = bench::thousandSteps(0);
     const model::ParseResult parsed =
         model::parseInstructionList(t, text, t.model(QStringLiteral("VB")));
     ASSERT_TRUE(parsed.ok());
@@ -201,7 +165,7 @@ TEST(ScanWrites, AProgramOfCoilsMovesAndAdditionsWritesAFewRangesNotTheImage) {
         EXPECT_TRUE(inRanges(*writes, word(written))) << written;
     EXPECT_FALSE(inRanges(*writes, word("D0"))); // only read
     EXPECT_FALSE(inRanges(*writes, word("D7000")));
-    expectScansWriteOnlyTheirWords(compiled.program, inputsOfList(t, parsed.list), 50, 3);
+    expectScansWriteOnlyTheirWords(compiled.program, test::inputsOf(t, parsed.list), 50, 3);
 }
 
 // Where the program says at run time what it writes, any word.
