@@ -943,6 +943,11 @@ DecodedFrame TrafficDecoder::decodeHostLinkReply(const End &from, const QByteArr
             const int count =
                 space == model::ProtocolSpace::HostLinkCompletion ? characters : characters / 4;
             command = hl::readCommand(command.unit, space, 0, count);
+        } else if (command.header == "TS") {
+            // TEST returns what was sent: the reply's own characters (before FCS "*").
+            const qsizetype end = bytes.indexOf('*') - 2;
+            if (end > 5)
+                command.text = bytes.mid(5, end - 5);
         }
     }
     f.station = command.unit;
@@ -983,6 +988,8 @@ DecodedFrame TrafficDecoder::decodeHostLinkReply(const End &from, const QByteArr
                                              hostLinkModeText(hl::modeOfStatus(reply.status)));
     else if (h == "MM")
         f.data = hex2(reply.model) + u'h';
+    else if (h == "TS" && !reply.frame.text.isEmpty())
+        f.data = quoted(reply.frame.text);
     return f;
 }
 

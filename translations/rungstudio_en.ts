@@ -66,7 +66,7 @@
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message numerus="yes">
-        <location filename="../app/gui/network_traffic_view.cpp" line="+258"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+307"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>

@@ -3171,7 +3171,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+171"/>
         <source>&amp;Errors only</source>
         <translation>Csak &amp;hibák</translation>
     </message>
@@ -3211,7 +3211,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>Minden állomás</translation>
     </message>
     <message numerus="yes">
-        <location line="+87"/>
+        <location line="+129"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n keret</numerusform>
@@ -3317,7 +3317,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>a beállítások hibásak</translation>
     </message>
     <message>
-        <location filename="../app/gui/network_view.cpp" line="+196"/>
+        <location filename="../app/gui/network_view.cpp" line="+209"/>
         <source>bridge: failed (%1)</source>
         <extracomment>a bridge whose line did not open; the tooltip says why</extracomment>
         <translation>híd: hibás (%1)</translation>
@@ -3369,7 +3369,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>%1. állomás, %2</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+154"/>
         <source>dashed: no frames on the wire (the manual does not publish them)</source>
         <translation>szaggatott: a vezetéken nincsenek keretek (a kézikönyv nem közli őket)</translation>
     </message>
@@ -5756,27 +5756,32 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+54"/>
+        <location line="+65"/>
         <source>Host Link: unit %1 answered, unit %2 was asked</source>
         <translation>Host Link: a(z) %1. egység válaszolt, a(z) %2. egységet kérdeztük</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-59"/>
         <source>Host Link: the PLC did not recognise the command %1 (IC)</source>
         <translation>Host Link: a PLC nem ismerte fel a(z) %1 parancsot (IC)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+16"/>
         <source>Host Link: the reply has no end code: %1</source>
         <translation>Host Link: a válaszban nincs befejezési kód: %1</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+51"/>
         <source>Host Link: the reply is for %1, the command was %2</source>
         <translation>Host Link: a válasz a(z) %1 parancsra szól, a parancs %2 volt</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>Host Link: TEST returned &quot;%1&quot;, not the &quot;%2&quot; that was sent</source>
+        <translation>Host Link: a TEST &quot;%1&quot; karaktereket adott vissza, nem az elküldött &quot;%2&quot; karaktereket</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Host Link: %1 refused: %2</source>
         <translation>Host Link: a(z) %1 elutasítva: %2</translation>
     </message>
@@ -5786,7 +5791,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Host Link: a(z) %1 válasza %2 adatkaraktert tartalmaz, ami nem illik a parancshoz</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+47"/>
         <source>Host Link: no reply from unit %1 within %2 ms</source>
         <translation>Host Link: a(z) %1. egység %2 ms alatt nem válaszolt</translation>
     </message>
@@ -6140,7 +6145,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Nem lehet figyelni ezen: %1:%2: %3</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/host_link_master.cpp" line="-102"/>
+        <location filename="../comms/protocol/host_link_master.cpp" line="-111"/>
         <source>Host Link: the reply to %1 goes on past the %2 characters of data the command asks for (part %3): not the answer to this command</source>
         <translation>Host Link: a(z) %1 válasza túlmegy a parancs által kért %2 adatkarakteren (%3. rész): nem erre a parancsra érkezett válasz</translation>
     </message>
@@ -6430,7 +6435,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+368"/>
+        <location filename="../editor/front_panel.cpp" line="+371"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (billentyű: %3; lenyomva tartva %4 = 1)</translation>
     </message>
@@ -8618,7 +8623,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %1 által megnevezett regiszter (%2) nem létezik</translation>
     </message>
     <message>
-        <location line="+216"/>
+        <location line="+217"/>
         <source>No page is shown: the program enables none</source>
         <translation>Nincs megjelenített oldal: a program egyet sem engedélyez</translation>
     </message>
@@ -11265,7 +11270,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::EngineImage</name>
     <message>
-        <location filename="../network/engine_image.cpp" line="+38"/>
+        <location filename="../network/engine_image.cpp" line="+67"/>
         <source>a station of a network keeps running: it is not stopped from its port</source>
         <translation>a hálózat állomása tovább fut: a portjáról nem állítható le</translation>
     </message>
@@ -11635,7 +11640,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::SharedLink</name>
     <message>
-        <location filename="../network/shared_link.cpp" line="+240"/>
+        <location filename="../network/shared_link.cpp" line="+252"/>
         <source>CPU Link exchange among %1 (%2 ms); no frames: the manual does not publish them</source>
         <translation>CPU Link adatcsere: %1 (%2 ms); keretek nélkül: a kézikönyv nem közli őket</translation>
     </message>

@@ -3178,7 +3178,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+171"/>
         <source>&amp;Errors only</source>
         <translation>Solo &amp;errori</translation>
     </message>
@@ -3218,7 +3218,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>Tutte le stazioni</translation>
     </message>
     <message numerus="yes">
-        <location line="+87"/>
+        <location line="+129"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>
@@ -3325,7 +3325,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>impostazioni rifiutate</translation>
     </message>
     <message>
-        <location filename="../app/gui/network_view.cpp" line="+196"/>
+        <location filename="../app/gui/network_view.cpp" line="+209"/>
         <source>bridge: failed (%1)</source>
         <extracomment>a bridge whose line did not open; the tooltip says why</extracomment>
         <translation>ponte: guasto (%1)</translation>
@@ -3377,7 +3377,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>stazione %1, %2</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+154"/>
         <source>dashed: no frames on the wire (the manual does not publish them)</source>
         <translation>tratteggiato: nessun frame sul cavo (il manuale non li pubblica)</translation>
     </message>
@@ -5770,27 +5770,32 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+54"/>
+        <location line="+65"/>
         <source>Host Link: unit %1 answered, unit %2 was asked</source>
         <translation>Host Link: ha risposto l&apos;unità %1, era interrogata l&apos;unità %2</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-59"/>
         <source>Host Link: the PLC did not recognise the command %1 (IC)</source>
         <translation>Host Link: il PLC non ha riconosciuto il comando %1 (IC)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+16"/>
         <source>Host Link: the reply has no end code: %1</source>
         <translation>Host Link: la risposta non ha codice di fine: %1</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+51"/>
         <source>Host Link: the reply is for %1, the command was %2</source>
         <translation>Host Link: la risposta è per %1, il comando era %2</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>Host Link: TEST returned &quot;%1&quot;, not the &quot;%2&quot; that was sent</source>
+        <translation>Host Link: TEST ha restituito &quot;%1&quot;, non i caratteri &quot;%2&quot; inviati</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Host Link: %1 refused: %2</source>
         <translation>Host Link: %1 rifiutato: %2</translation>
     </message>
@@ -5800,7 +5805,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Host Link: la risposta a %1 contiene %2 caratteri di dati che non corrispondono al comando</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+47"/>
         <source>Host Link: no reply from unit %1 within %2 ms</source>
         <translation>Host Link: nessuna risposta dall&apos;unità %1 entro %2 ms</translation>
     </message>
@@ -6154,7 +6159,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Impossibile restare in ascolto su %1:%2: %3</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/host_link_master.cpp" line="-102"/>
+        <location filename="../comms/protocol/host_link_master.cpp" line="-111"/>
         <source>Host Link: the reply to %1 goes on past the %2 characters of data the command asks for (part %3): not the answer to this command</source>
         <translation>Host Link: la risposta a %1 va oltre i %2 caratteri di dati chiesti dal comando (parte %3): non è la risposta a questo comando</translation>
     </message>
@@ -6445,7 +6450,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+368"/>
+        <location filename="../editor/front_panel.cpp" line="+371"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (tasto %3; tenuto premuto, %4 vale 1)</translation>
     </message>
@@ -8641,7 +8646,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il registro indicato da %1 (%2) non esiste</translation>
     </message>
     <message>
-        <location line="+216"/>
+        <location line="+217"/>
         <source>No page is shown: the program enables none</source>
         <translation>Nessuna pagina visualizzata: il programma non ne abilita alcuna</translation>
     </message>
@@ -11288,7 +11293,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::EngineImage</name>
     <message>
-        <location filename="../network/engine_image.cpp" line="+38"/>
+        <location filename="../network/engine_image.cpp" line="+67"/>
         <source>a station of a network keeps running: it is not stopped from its port</source>
         <translation>una stazione di una rete continua a funzionare: non si ferma dalla sua porta</translation>
     </message>
@@ -11658,7 +11663,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::SharedLink</name>
     <message>
-        <location filename="../network/shared_link.cpp" line="+240"/>
+        <location filename="../network/shared_link.cpp" line="+252"/>
         <source>CPU Link exchange among %1 (%2 ms); no frames: the manual does not publish them</source>
         <translation>scambio CPU Link tra %1 (%2 ms); nessun frame: il manuale non li pubblica</translation>
     </message>

@@ -152,6 +152,13 @@ FrameStatus ReplyDecoder::part(QByteArrayView frame) {
                     .arg(QString::fromLatin1(m_command.header)),
                 NotSupported);
         }
+        if (m_reply.frame.header == "TS") {
+            // TEST has no end code: the characters sent come back as they were (W353,
+            // Host Link commands, TEST).
+            m_reply.frame.endCode = -1;
+            text = text.sliced(5);
+            return appendText(text, p.last);
+        }
         const auto endCode = hexValue(text, 5, 2);
         if (!endCode)
             return fail(Kind::Malformed,
@@ -161,6 +168,10 @@ FrameStatus ReplyDecoder::part(QByteArrayView frame) {
         m_reply.frame.endCode = *endCode;
         text = text.sliced(7);
     }
+    return appendText(text, p.last);
+}
+
+FrameStatus ReplyDecoder::appendText(QByteArrayView text, bool last) {
     if (m_reply.frame.text.size() + text.size() > maxReplyText())
         return fail(Kind::Malformed,
                     QCoreApplication::translate(
@@ -171,7 +182,7 @@ FrameStatus ReplyDecoder::part(QByteArrayView frame) {
                         .arg(maxReplyText())
                         .arg(m_parts));
     m_reply.frame.text += text;
-    if (!p.last) {
+    if (!last) {
         m_delimiter = true;
         return m_status;
     }
@@ -205,6 +216,16 @@ FrameStatus ReplyDecoder::finish() {
             QCoreApplication::translate("rung::comms::Protocol",
                                         "Host Link: the reply is for %1, the command was %2")
                 .arg(QString::fromLatin1(f.header), QString::fromLatin1(m_command.header)));
+    const QByteArrayView h(f.header);
+    if (h == "TS") {
+        if (f.text != m_command.text)
+            return fail(Kind::WrongReply,
+                        QCoreApplication::translate(
+                            "rung::comms::Protocol",
+                            "Host Link: TEST returned \"%1\", not the \"%2\" that was sent")
+                            .arg(QString::fromLatin1(f.text), QString::fromLatin1(m_command.text)));
+        return complete();
+    }
     if (f.endCode != Normal)
         return fail(
             Kind::DeviceError,
@@ -220,7 +241,6 @@ FrameStatus ReplyDecoder::finish() {
                         .arg(QString::fromLatin1(f.header))
                         .arg(f.text.size()));
     };
-    const QByteArrayView h(f.header);
     ProtocolSpace space;
     bool write = false;
     if (spaceOfHeader(h, space, write) && !write) {

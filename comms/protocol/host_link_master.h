@@ -49,6 +49,7 @@ public:
 
 private:
     FrameStatus part(QByteArrayView frame);
+    FrameStatus appendText(QByteArrayView text, bool last);
     FrameStatus finish();
     qsizetype maxReplyText() const;
 

@@ -86,6 +86,23 @@ TEST(HostLink, DecodesReadStatusModelAndWriteReplies) {
     EXPECT_EQ(sc.feed(reply(0, "SC", 0)), FrameStatus::Complete);
 }
 
+// W353, TEST: no end code in the reply; the characters come back as sent, and other
+// characters are not this command's answer.
+TEST(HostLink, TestIsAnsweredWithTheCharactersAndNoEndCode) {
+    const Frame test{0, "TS", -1, "HELLO 123"};
+    ReplyDecoder ok(test);
+    ASSERT_EQ(ok.feed(encode(test).front()), FrameStatus::Complete)
+        << ok.error().message.toStdString();
+    EXPECT_EQ(ok.reply().frame.text, QByteArray("HELLO 123"));
+    EXPECT_EQ(ok.reply().frame.endCode, -1);
+
+    ReplyDecoder other(test);
+    EXPECT_EQ(other.feed(encode({0, "TS", -1, "HELLO 124"}).front()), FrameStatus::Failed);
+    EXPECT_EQ(other.error().kind, ProtocolError::Kind::WrongReply);
+    EXPECT_NE(other.error().message.indexOf(QStringLiteral("HELLO 124")), -1)
+        << other.error().message.toStdString();
+}
+
 TEST(HostLink, ALongReplyIsSplitThirtyThenThirtyOneWordsAndNeedsADelimiterPerPart) {
     std::vector<std::uint16_t> words;
     QByteArray text;

@@ -329,6 +329,29 @@ TEST(TrafficDecode, AHostLinkReadOfDmAndItsReplyOnARun) {
     EXPECT_EQ(reply.problem.toStdString(), "");
 }
 
+// W353, TEST: the PLC returns the characters without an end code; the reply reads as an
+// answer with the characters as its data, with its command seen and alone.
+TEST(TrafficDecode, AHostLinkTestReturnsItsCharactersWithoutAnEndCode) {
+    const QByteArray command = comms::hostlink::encode({0, "TS", -1, "HELLO 123"}).front();
+    std::vector<TrafficRecord> records;
+    const std::vector<DecodedFrame> f = hostLinkExchange(command, &records);
+    ASSERT_EQ(f.size(), 2u);
+    EXPECT_EQ(records[1].bytes, command) << "the echo is the command itself";
+    EXPECT_EQ(f[0].commandText.toStdString(), "TS test");
+    EXPECT_EQ(f[0].data.toStdString(), "HELLO 123");
+    const NetRun other = runNetwork(kHostAndCpm1, kCpm1);
+    ASSERT_TRUE(other.net);
+    const DecodedFrame alone = TrafficDecoder(*other.net).decode(records[1]);
+    for (const DecodedFrame &reply : {f[1], alone}) {
+        EXPECT_EQ(reply.kind, DecodedFrame::Kind::Reply);
+        EXPECT_EQ(reply.commandText.toStdString(), "TS test");
+        EXPECT_EQ(reply.data.toStdString(), "HELLO 123");
+        EXPECT_EQ(reply.errorCode, -1);
+        EXPECT_EQ(reply.problem.toStdString(), "");
+        EXPECT_FALSE(reply.failed());
+    }
+}
+
 // W353: a write in RUN is refused with end code 01; the reply says the PLC's code and its
 // text (the PLC's answer, not a fault of the frame).
 TEST(TrafficDecode, AHostLinkWriteRefusedInRunSaysEndCode01) {
