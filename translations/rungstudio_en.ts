@@ -226,7 +226,7 @@
 <context>
     <name>rung::network::TrafficDecode</name>
     <message numerus="yes">
-        <location filename="../network/traffic_decode.cpp" line="+223"/>
+        <location filename="../network/traffic_decode.cpp" line="+79"/>
         <source>the frame stops after %n byte(s): cut short or not a frame</source>
         <translation>
             <numerusform>the frame stops after %n byte: cut short or not a frame</numerusform>

@@ -11743,7 +11743,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::TrafficDecode</name>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="+35"/>
+        <location filename="../network/traffic_decode.cpp" line="+109"/>
         <source>read coils</source>
         <translation>tekercsek olvasása</translation>
     </message>
@@ -11809,12 +11809,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+37"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="+66"/>
         <source>unknown command</source>
         <translation>ismeretlen parancs</translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="-26"/>
         <source>read IR/SR words</source>
         <translation>IR/SR csatornák olvasása</translation>
     </message>
@@ -11934,12 +11934,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>CR: kérem a következő részt</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location filename="../network/traffic_decode.cpp" line="-92"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message numerus="yes">
-        <location line="+42"/>
+        <location line="+31"/>
         <source>the frame stops after %n byte(s): cut short or not a frame</source>
         <translation>
             <numerusform>a keret %n bájt után véget ér: csonka, vagy nem is keret</numerusform>
@@ -11953,7 +11953,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+165"/>
         <source>MODBUS slave device</source>
         <translation>MODBUS slave eszköz</translation>
     </message>
@@ -11963,7 +11963,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>soros vonali eszköz</translation>
     </message>
     <message>
-        <location line="+421"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="+34"/>
         <location line="+130"/>
         <source>Host Link</source>
         <translation>Host Link</translation>
@@ -11979,7 +11979,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>nem a következő részt kérő CR</translation>
     </message>
     <message>
-        <location line="-627"/>
+        <location filename="../network/traffic_decode.cpp" line="-57"/>
         <location line="+58"/>
         <source>real line</source>
         <translation>valódi vonal</translation>
@@ -12016,8 +12016,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>hibás összeg (érkezett: %1, számított: %2): a slave 11h hibával válaszol</translation>
     </message>
     <message>
-        <location line="-302"/>
-        <location line="+308"/>
+        <location line="+6"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="-179"/>
         <source>the slave refuses it: %1</source>
         <translation>a slave elutasítja: %1</translation>
     </message>

@@ -11766,7 +11766,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::TrafficDecode</name>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="+35"/>
+        <location filename="../network/traffic_decode.cpp" line="+109"/>
         <source>read coils</source>
         <translation>lettura bobine</translation>
     </message>
@@ -11832,12 +11832,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+37"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="+66"/>
         <source>unknown command</source>
         <translation>comando sconosciuto</translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="-26"/>
         <source>read IR/SR words</source>
         <translation>lettura canali IR/SR</translation>
     </message>
@@ -11957,12 +11957,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>CR: la parte successiva, prego</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location filename="../network/traffic_decode.cpp" line="-92"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message numerus="yes">
-        <location line="+42"/>
+        <location line="+31"/>
         <source>the frame stops after %n byte(s): cut short or not a frame</source>
         <translation>
             <numerusform>il frame si ferma dopo %n byte: troncato o non è un frame</numerusform>
@@ -11978,7 +11978,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+165"/>
         <source>MODBUS slave device</source>
         <translation>dispositivo slave MODBUS</translation>
     </message>
@@ -11988,7 +11988,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>dispositivo di linea</translation>
     </message>
     <message>
-        <location line="+421"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="+34"/>
         <location line="+130"/>
         <source>Host Link</source>
         <translation>Host Link</translation>
@@ -12004,7 +12004,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>non è il CR che chiede la parte successiva</translation>
     </message>
     <message>
-        <location line="-627"/>
+        <location filename="../network/traffic_decode.cpp" line="-57"/>
         <location line="+58"/>
         <source>real line</source>
         <translation>linea reale</translation>
@@ -12041,8 +12041,8 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>somma errata (ricevuta %1, calcolata %2): lo slave risponde con l&apos;errore 11h</translation>
     </message>
     <message>
-        <location line="-302"/>
-        <location line="+308"/>
+        <location line="+6"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="-179"/>
         <source>the slave refuses it: %1</source>
         <translation>lo slave la rifiuta: %1</translation>
     </message>
