@@ -487,18 +487,17 @@ void FrontPanel::pressKey(std::size_t index, bool down) {
     if (!m_source || !m_target || index >= m_view.keys.size())
         return;
     const model::PanelKeyView &key = m_view.keys[index];
-    // SWAP's bit is not pressed while a value is entered: it chooses the digit there, and the
-    // engine would step the page (model::terminalPassesKey).
-    if (!down || model::terminalPassesKey(m_terminal, key.role))
+    std::shared_ptr<const model::Snapshot> snapshot = m_source->snapshot();
+    if (snapshot && (!snapshot->layout || &snapshot->layout->target() != m_target))
+        snapshot.reset();
+    const model::PanelKeyAction action = model::panelKeyAction(
+        *m_target, snapshot.get(), m_terminal, key.role, down, m_clock.elapsed());
+    if (action.writeBit)
         m_source->writeBit(key.address, down);
-    const std::shared_ptr<const model::Snapshot> snapshot = m_source->snapshot();
-    if (key.role == model::PanelKeyRole::Other || !snapshot || !snapshot->layout ||
-        &snapshot->layout->target() != m_target)
-        return;
-    for (const model::TerminalWrite &w :
-         model::terminalKey(*m_target, *snapshot, m_terminal, key.role, down, m_clock.elapsed()))
+    for (const model::TerminalWrite &w : action.words)
         m_source->writeWord(w.device, w.value);
-    refresh();
+    if (key.role != model::PanelKeyRole::Other && snapshot)
+        refresh();
 }
 
 int FrontPanel::keyIndexFor(int qtKey) const {

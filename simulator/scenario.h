@@ -35,11 +35,13 @@ struct ScenarioStatement {
         Within,  // within D expect COND (from the previous statement's time)
         Always,  // always expect COND (every scan of the run)
         Run,     // run T: the run goes on at least until T
+        Press,   // at T press KEY [for D]: a key of the PLC's front panel, held D (100 ms)
     } kind = Kind::Set;
     int line = 0;
     ScenarioTime time; // at / within / run
-    QString text;      // what follows set/force/release/expect, as written
-    QString source;    // the whole statement as written, without its comment
+    QString text;      // what follows set/force/release/expect, as written; press: the key
+    std::optional<ScenarioTime> hold; // press ... for D
+    QString source;                   // the whole statement as written, without its comment
 };
 
 struct Scenario {

@@ -88,7 +88,7 @@ Scenario parseScenario(const QString &text, const QString &file,
                                            QRegularExpression::CaseInsensitiveOption);
     static const QRegularExpression at(
         QStringLiteral("^at\\s+") + kTime +
-            QStringLiteral("\\s+(set|force|release|expect)\\b\\s*(.*)$"),
+            QStringLiteral("\\s+(set|force|release|expect|press)\\b\\s*(.*)$"),
         QRegularExpression::CaseInsensitiveOption);
     static const QRegularExpression within(QStringLiteral("^within\\s+") + kTime +
                                                QStringLiteral("\\s+expect\\b\\s*(.*)$"),
@@ -97,6 +97,9 @@ Scenario parseScenario(const QString &text, const QString &file,
                                            QRegularExpression::CaseInsensitiveOption);
     static const QRegularExpression run(QStringLiteral("^run\\s+") + kTime + QStringLiteral("$"),
                                         QRegularExpression::CaseInsensitiveOption);
+    static const QRegularExpression pressHold(QStringLiteral("^(\\S+)\\s+for\\s+") + kTime +
+                                                  QStringLiteral("$"),
+                                              QRegularExpression::CaseInsensitiveOption);
     Scenario s;
     s.file = file;
     const QStringList lines = text.split(QLatin1Char('\n'));
@@ -158,8 +161,33 @@ Scenario parseScenario(const QString &text, const QString &file,
             st.kind = verb == QLatin1String("set")       ? ScenarioStatement::Kind::Set
                       : verb == QLatin1String("force")   ? ScenarioStatement::Kind::Force
                       : verb == QLatin1String("release") ? ScenarioStatement::Kind::Release
+                      : verb == QLatin1String("press")   ? ScenarioStatement::Kind::Press
                                                          : ScenarioStatement::Kind::Expect;
             st.text = m.captured(4).trimmed();
+            if (st.kind == ScenarioStatement::Kind::Press) {
+                // One key, held for a time or for a tap's 100 ms.
+                static const QRegularExpression keyFor(QStringLiteral("^(\\S+)\\s+for\\s+(.*)$"),
+                                                       QRegularExpression::CaseInsensitiveOption);
+                const QRegularExpressionMatch withFor = keyFor.match(st.text);
+                if (withFor.hasMatch()) {
+                    const QRegularExpressionMatch held = pressHold.match(st.text);
+                    QString holdError;
+                    if (held.hasMatch())
+                        st.hold = readScenarioTime(held.captured(2), held.captured(3), &holdError);
+                    if (!st.hold) {
+                        fail(lineNo, holdError.isEmpty()
+                                         ? ScenarioTr::tr("%1 is no time").arg(withFor.captured(2))
+                                         : holdError);
+                        continue;
+                    }
+                    st.text = withFor.captured(1);
+                } else if (st.text.contains(QLatin1Char(' '))) {
+                    fail(lineNo, ScenarioTr::tr("press names one key, then \"for TIME\" if it "
+                                                "is held: \"%1\"")
+                                     .arg(st.text));
+                    continue;
+                }
+            }
         } else if (const auto w = within.match(line); w.hasMatch()) {
             const auto t = time(w);
             if (!t)
@@ -179,7 +207,8 @@ Scenario parseScenario(const QString &text, const QString &file,
         } else {
             fail(lineNo,
                  ScenarioTr::tr("\"%1\" is no statement (program, period, at TIME set|force|"
-                                "release|expect, within TIME expect, always expect, run TIME)")
+                                "release|expect|press, within TIME expect, always expect, run "
+                                "TIME)")
                      .arg(line));
             continue;
         }

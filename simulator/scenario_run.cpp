@@ -1,7 +1,10 @@
 #include "scenario.h"
 #include "simulator/tr.h"
 
+#include "model/image/panel_keys.h"
 #include "model/target/address.h"
+
+#include <map>
 
 #include <QCoreApplication>
 #include <QDir>
@@ -397,7 +400,43 @@ struct PreparedStatement {
     std::vector<Value> devices;          // release
     bool releaseAll = false;
     Condition condition; // expect, within, always
+    // press: the key's engine, bit and role, and how long it is held
+    Engine *keyEngine = nullptr;
+    model::Address key;
+    model::PanelKeyRole keyRole = model::PanelKeyRole::Other;
+    qint64 holdMs = 0;
 };
+
+// A key of the engine's front panel by its label (PL110 manual 5.2: SWAP, UP, DOWN, SET),
+// into `step`; false with the reason in `error`.
+bool readKey(ScenarioSubject &subject, const QString &written, PreparedStatement &step,
+             QString *error) {
+    QString label;
+    Engine *engine = subject.engineFor(written, &label, error);
+    if (!engine)
+        return false;
+    const model::Target &target = engine->program().layout->target();
+    QStringList labels;
+    for (const model::PanelKey &k : target.panel.keys) {
+        labels << k.label;
+        if (k.label.compare(label, Qt::CaseInsensitive) != 0)
+            continue;
+        const auto parsed = model::parseAddress(target, k.device);
+        const auto *a = std::get_if<model::Address>(&parsed);
+        if (!a)
+            break;
+        step.keyEngine = engine;
+        step.key = *a;
+        step.keyRole = k.role;
+        return true;
+    }
+    *error = labels.isEmpty()
+                 ? ScenarioTr::tr("%1: the %2 has no keys on its front panel to press")
+                       .arg(written, target.displayName)
+                 : ScenarioTr::tr("%1 is no key of the %2's front panel (its keys: %3)")
+                       .arg(written, target.displayName, labels.join(QStringLiteral(", ")));
+    return false;
+}
 
 QString seenText(const Condition &c) {
     std::vector<const Value *> devices;
@@ -522,8 +561,19 @@ ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
             break;
         case K::Run:
             break;
+        case K::Press: {
+            QString error;
+            ok = readKey(subject, st.text, step, &error);
+            if (!ok)
+                result.errors.push_back({st.line, error});
+            // A tap: 100 ms, and at least the one scan that sees the key.
+            step.holdMs = std::max(st.hold ? st.hold->resolve(period) : 100, period);
+            break;
+        }
         }
         if (!ok) {
+            if (st.kind == K::Press)
+                continue;
             result.errors.push_back({st.line, reader.error()});
             continue;
         }
@@ -541,7 +591,40 @@ ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
     quint64 done = 0;
     // `always`: the first failing scan is reported, with how many failed.
     std::vector<std::optional<ScenarioFailure>> alwaysFailure(always.size());
+    // The front panels' terminals (model/image/panel_keys.h) of the engines whose keys are
+    // pressed, on virtual time, and the keys held until a time.
+    struct HeldKey {
+        const PreparedStatement *press;
+        qint64 untilMs;
+    };
+    std::map<Engine *, model::TerminalState> terminals;
+    std::vector<HeldKey> held;
+    // The terminal sees the memory as each key comes (what the IDE's panel does at every
+    // refresh): SET held long enough opens the password page, a page the program changed ends
+    // a field's editing; between keys nothing it keeps shows in the memory.
+    auto pressKey = [&](const PreparedStatement &st, bool down, qint64 ms) {
+        Engine &engine = *st.keyEngine;
+        const model::Target &target = engine.program().layout->target();
+        model::TerminalState &terminal = terminals[&engine];
+        const model::Snapshot snapshot = engine.snapshot();
+        model::terminalTick(target, snapshot, terminal, ms);
+        const model::PanelKeyAction action =
+            model::panelKeyAction(target, &snapshot, terminal, st.keyRole, down, ms);
+        if (action.writeBit)
+            engine.setBit(st.key, down);
+        for (const model::TerminalWrite &w : action.words)
+            engine.writeWord(w.device, w.value);
+    };
     auto scan = [&] {
+        const qint64 now = static_cast<qint64>(done) * period;
+        for (auto k = held.begin(); k != held.end();) {
+            if (k->untilMs > now) {
+                ++k;
+                continue;
+            }
+            pressKey(*k->press, false, k->untilMs);
+            k = held.erase(k);
+        }
         subject.step();
         ++done;
         for (std::size_t k = 0; k < always.size(); ++k) {
@@ -585,7 +668,8 @@ ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
         switch (statement.kind) {
         case K::Set:
         case K::Force:
-        case K::Release: {
+        case K::Release:
+        case K::Press: {
             const qint64 t = statement.time.resolve(period);
             // A `within` before it may have run past t: applied late it would change what the
             // rest of the run shows without a word, so the scenario fails here, saying so.
@@ -620,6 +704,10 @@ ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
                 subject.releaseAll();
             for (const Value &d : st.devices)
                 d.engine->release(d.address);
+            if (statement.kind == K::Press) {
+                pressKey(st, true, t);
+                held.push_back({&st, t + st.holdMs});
+            }
             previous = t;
             break;
         }

@@ -12502,12 +12502,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem egész számú ezredmásodperc</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+46"/>
+        <location line="+62"/>
         <source>%1 is no time</source>
         <translation>%1 nem időtartam</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-56"/>
         <source>a scenario runs one program; the first is on line %1</source>
         <translation>egy forgatókönyv egy programot futtat; az első a(z) %1. sorban van</translation>
     </message>
@@ -12522,12 +12523,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a ciklusidő legalább 1 ms</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>&quot;%1&quot; is no statement (program, period, at TIME set|force|release|expect, within TIME expect, always expect, run TIME)</source>
-        <translation>„%1” nem utasítás (program, period, at IDŐ set|force|release|expect, within IDŐ expect, always expect, run IDŐ)</translation>
+        <location line="+38"/>
+        <source>press names one key, then &quot;for TIME&quot; if it is held: &quot;%1&quot;</source>
+        <translation>a press egy gombot nevez meg, utána „for IDŐ”, ha nyomva tartják: „%1”</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+24"/>
+        <source>&quot;%1&quot; is no statement (program, period, at TIME set|force|release|expect|press, within TIME expect, always expect, run TIME)</source>
+        <translation>„%1” nem utasítás (program, period, at IDŐ set|force|release|expect|press, within IDŐ expect, always expect, run IDŐ)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>the statement says nothing after its verb</source>
         <translation>az utasítás igéje után nincs semmi</translation>
     </message>
@@ -12537,7 +12543,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>nincs program: a forgatókönyv „program FÁJL” sorral kezdődik</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+100"/>
+        <location filename="../simulator/scenario_run.cpp" line="+103"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>„%1” itt nem értelmezhető</translation>
     </message>
@@ -12607,7 +12613,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 önmagában nem feltétel</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+50"/>
+        <source>%1: the %2 has no keys on its front panel to press</source>
+        <translation>%1: a(z) %2 előlapján nincs megnyomható gomb</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 is no key of the %2&apos;s front panel (its keys: %3)</source>
+        <translation>%1 nem gombja a(z) %2 előlapjának (gombjai: %3)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>%1: STATION/DEVICE names a device of a network&apos;s station; this scenario&apos;s program is one PLC</source>
         <translation>%1: az ÁLLOMÁS/OPERANDUS egy hálózat állomásának operandusát nevezi meg; ennek a forgatókönyvnek a programja egyetlen PLC</translation>
     </message>
@@ -12617,12 +12633,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>az at %1 korábbi, mint a(z) %2. sor %3 ideje: az utasítások időrendben követik egymást</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+155"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so it applied then, not at %3</source>
         <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért akkor hajtódott végre, nem %3-kor</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+37"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért az at %3 nem volt ellenőrizhető</translation>
     </message>
@@ -12645,12 +12661,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1-kor: mindig elvárt %2, tapasztalt %3 (%5 ciklusból %4-ban nem teljesült)</translation>
     </message>
     <message>
-        <location line="-243"/>
+        <location line="-292"/>
         <source>runtime error at step %1: %2</source>
         <translation>futásidejű hiba a(z) %1. lépésnél: %2</translation>
     </message>
     <message>
-        <location line="+275"/>
+        <location line="+324"/>
         <source>a network&apos;s stations bring their own targets and models: --target and --model are for one program</source>
         <translation>a hálózat állomásai saját céleszközt és modellt hoznak: a --target és a --model egyetlen programhoz való</translation>
     </message>

@@ -12527,12 +12527,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un numero intero di millisecondi</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+46"/>
+        <location line="+62"/>
         <source>%1 is no time</source>
         <translation>%1 non è un tempo</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-56"/>
         <source>a scenario runs one program; the first is on line %1</source>
         <translation>uno scenario esegue un solo programma; il primo è alla riga %1</translation>
     </message>
@@ -12547,12 +12548,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il periodo è un tempo di almeno 1 ms</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>&quot;%1&quot; is no statement (program, period, at TIME set|force|release|expect, within TIME expect, always expect, run TIME)</source>
-        <translation>&quot;%1&quot; non è un&apos;istruzione (program, period, at TEMPO set|force|release|expect, within TEMPO expect, always expect, run TEMPO)</translation>
+        <location line="+38"/>
+        <source>press names one key, then &quot;for TIME&quot; if it is held: &quot;%1&quot;</source>
+        <translation>press indica un solo tasto, poi &quot;for TEMPO&quot; se è tenuto premuto: &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+24"/>
+        <source>&quot;%1&quot; is no statement (program, period, at TIME set|force|release|expect|press, within TIME expect, always expect, run TIME)</source>
+        <translation>&quot;%1&quot; non è un&apos;istruzione (program, period, at TEMPO set|force|release|expect|press, within TEMPO expect, always expect, run TEMPO)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>the statement says nothing after its verb</source>
         <translation>l&apos;istruzione non dice nulla dopo il verbo</translation>
     </message>
@@ -12562,7 +12568,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>nessun programma: uno scenario inizia con &quot;program FILE&quot;</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+100"/>
+        <location filename="../simulator/scenario_run.cpp" line="+103"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>&quot;%1&quot; non è comprensibile qui</translation>
     </message>
@@ -12632,7 +12638,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 da solo non è una condizione</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+50"/>
+        <source>%1: the %2 has no keys on its front panel to press</source>
+        <translation>%1: il %2 non ha tasti da premere sul frontale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 is no key of the %2&apos;s front panel (its keys: %3)</source>
+        <translation>%1 non è un tasto del frontale del %2 (i suoi tasti: %3)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>%1: STATION/DEVICE names a device of a network&apos;s station; this scenario&apos;s program is one PLC</source>
         <translation>%1: STAZIONE/OPERANDO indica un operando di una stazione di una rete; il programma di questo scenario è un solo PLC</translation>
     </message>
@@ -12642,12 +12658,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>at %1 viene prima di %3 della riga %2: le istruzioni seguono l&apos;ordine dei loro tempi</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+155"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so it applied then, not at %3</source>
         <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi è stata applicata allora, non a %3</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+37"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi at %3 non si è potuto verificare</translation>
     </message>
@@ -12670,12 +12686,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>a %1: atteso sempre %2, visto %3 (non soddisfatto in %4 di %5 scansioni)</translation>
     </message>
     <message>
-        <location line="-243"/>
+        <location line="-292"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
     <message>
-        <location line="+275"/>
+        <location line="+324"/>
         <source>a network&apos;s stations bring their own targets and models: --target and --model are for one program</source>
         <translation>le stazioni di una rete portano i propri target e modelli: --target e --model valgono per un solo programma</translation>
     </message>

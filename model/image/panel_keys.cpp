@@ -262,6 +262,15 @@ std::vector<TerminalWrite> terminalKey(const Target &target, const Snapshot &sna
     return writes;
 }
 
+PanelKeyAction panelKeyAction(const Target &target, const Snapshot *snapshot, TerminalState &state,
+                              PanelKeyRole role, bool down, qint64 wallMs) {
+    PanelKeyAction action;
+    action.writeBit = !down || terminalPassesKey(state, role);
+    if (role != PanelKeyRole::Other && snapshot)
+        action.words = terminalKey(target, *snapshot, state, role, down, wallMs);
+    return action;
+}
+
 void terminalTick(const Target &target, const Snapshot &snapshot, TerminalState &s, qint64 wallMs) {
     const PanelDisplay &d = target.panel.display;
     if (d.kind != DisplayKind::Text)

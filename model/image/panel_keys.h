@@ -52,6 +52,17 @@ std::vector<TerminalWrite> terminalKey(const Target &target, const Snapshot &sna
                                        TerminalState &state, PanelKeyRole role, bool down,
                                        qint64 wallMs);
 
+// A key of the table pressed or released as the IDE's front panel and a scenario's `press` do
+// it: whether its bit is written (a release always; a press unless the terminal keeps the key,
+// terminalPassesKey), and then the words the terminal writes (terminalKey; none for a key of
+// no terminal role or without a snapshot).
+struct PanelKeyAction {
+    bool writeBit = false;
+    std::vector<TerminalWrite> words;
+};
+PanelKeyAction panelKeyAction(const Target &target, const Snapshot *snapshot, TerminalState &state,
+                              PanelKeyRole role, bool down, qint64 wallMs);
+
 // Time passing and a new snapshot: SET held long enough opens the password page; a page
 // change ends the editing of a field and, as a key does, wakes the display.
 void terminalTick(const Target &target, const Snapshot &snapshot, TerminalState &state,

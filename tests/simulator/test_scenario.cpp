@@ -187,6 +187,89 @@ TEST(Scenario, ErrorsHaveTheirLines) {
     EXPECT_FALSE(r.passed());
 }
 
+// `press` holds a key of the front panel as a person does (PL110 manual 5.2, 5.3): SWAP steps
+// the pages through its bit; SET held 2 s opens the password page, where the keys enter the
+// system password 1357 digit by digit (SWAP's bit does not reach the program there: the page
+// stays); then SET edits the slave address (SMW4), UP raises it, SET stores it.
+TEST(Scenario, PressHoldsAFrontPanelKeyAndTheTerminalEditsAsOnThePlc) {
+    QString text = QStringLiteral("program panel.il --target pl110\n"
+                                  "at 0s set SM4=1\n"
+                                  "at 0s expect SM105=1\n"
+                                  "at 100ms press SWAP\n"
+                                  "at 300ms press swap\n"
+                                  "at 500ms expect SM105=3\n"
+                                  "at 600ms press SET for 2.5s\n");
+    qint64 ms = 3200;
+    const auto press = [&](const char *key, int times = 1) {
+        for (int k = 0; k < times; ++k, ms += 200)
+            text += QStringLiteral("at %1ms press %2\n").arg(ms).arg(QLatin1String(key));
+    };
+    press("UP");
+    press("SWAP");
+    press("UP", 3);
+    press("SWAP");
+    press("UP", 5);
+    press("SWAP");
+    press("UP", 7);
+    press("SET");
+    text += QStringLiteral("at %1ms expect SM109=1357 SM105=3 SM4=1\n").arg(ms);
+    press("SET");
+    press("UP", 2);
+    press("SET");
+    text += QStringLiteral("at %1ms expect SM4=3\n").arg(ms);
+    // The program shows another page while the address is edited: the value entered is not
+    // stored (5.2), the next SET finds no field on page 1.
+    press("SET");
+    press("UP");
+    text += QStringLiteral("at %1ms set SM106=1\n").arg(ms);
+    ms += 200;
+    press("SET");
+    text += QStringLiteral("at %1ms expect SM4=3 SM105=1\n").arg(ms);
+    const ScenarioResult r =
+        run(text, QStringLiteral("LD SM0.0\nMOV 1 V0\nEND\n"), rung::testing::pl110());
+    EXPECT_TRUE(r.passed()) << why(r) << text.toStdString();
+    EXPECT_EQ(r.expectations.size(), 5u);
+
+    // SET pressed for less than 2 s is a press, not the password page: nothing is entered.
+    const ScenarioResult shortHold =
+        run(QStringLiteral("program panel.il\n"
+                           "at 100ms press SET for 1.9s\n"
+                           "at 2.1s press UP\n"
+                           "at 2.3s press SET\n"
+                           "at 2.5s expect SM109=0\n"),
+            QStringLiteral("LD SM0.0\nMOV 1 V0\nEND\n"), rung::testing::pl110());
+    EXPECT_TRUE(shortHold.passed()) << why(shortHold);
+}
+
+// A key the panel does not have, a PLC without keys and a press that names more than a key are
+// errors with their lines, the keys listed.
+TEST(Scenario, PressErrorsNameTheKeys) {
+    const QString program = QStringLiteral("LD SM0.0\nMOV 1 V0\nEND\n");
+    std::vector<ScenarioError> errors;
+    parseScenario(QStringLiteral("program panel.il\n"
+                                 "at 2s press SET UP\n"
+                                 "at 3s press SET for 2 weeks\n"),
+                  QStringLiteral("x.rungtest"), &errors);
+    ASSERT_EQ(errors.size(), 2u);
+    EXPECT_EQ(errors[0].line, 2);
+    EXPECT_EQ(errors[0].message,
+              QStringLiteral("press names one key, then \"for TIME\" if it is held: \"SET UP\""));
+    EXPECT_EQ(errors[1].line, 3);
+    EXPECT_EQ(errors[1].message, QStringLiteral("2 weeks is no time"));
+    const ScenarioResult r = run(QStringLiteral("program panel.il\nat 1s press ENTER\n"), program,
+                                 rung::testing::pl110());
+    EXPECT_FALSE(r.ran);
+    ASSERT_EQ(r.errors.size(), 1u) << why(r);
+    EXPECT_EQ(r.errors[0].line, 2);
+    EXPECT_EQ(r.errors[0].message,
+              QStringLiteral("ENTER is no key of the PL110's front panel (its keys: SWAP, UP, "
+                             "DOWN, SET)"));
+    const ScenarioResult vigor = run(QStringLiteral("program latch.il\nat 1s press SET\n"));
+    ASSERT_EQ(vigor.errors.size(), 1u) << why(vigor);
+    EXPECT_EQ(vigor.errors[0].message,
+              QStringLiteral("SET: the Vigor has no keys on its front panel to press"));
+}
+
 TEST(Scenario, TimesAreWrittenAsPeopleReadThem) {
     EXPECT_EQ(formatScenarioTime(150), QStringLiteral("150ms"));
     EXPECT_EQ(formatScenarioTime(35000), QStringLiteral("35s"));
