@@ -139,3 +139,25 @@ TEST(NetworkScenario, StationsAreForNetworksAndTargetsForPrograms) {
     ASSERT_EQ(net.errors.size(), 1u);
     EXPECT_TRUE(net.errors.front().message.contains(QStringLiteral("--target")));
 }
+
+// `press STATION/KEY`: the key of that station's front panel (PL110 manual 5.2: SWAP steps
+// the pages), the other stations' memory untouched; a key of a station without keys names it.
+TEST(NetworkScenario, PressReachesTheStationsFrontPanel) {
+    const QString pl110 = QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/pl110-exp/");
+    const QString network = QStringLiteral(R"({"stations": [
+        {"name": "a", "program": "%1master.il", "target": "pl110", "model": "PL110-2A"},
+        {"name": "b", "program": "%1master.il", "target": "pl110", "model": "PL110-2A"},
+        {"name": "v", "program": "%2master.il", "model": "VB"}], "wires": []})")
+                                .arg(pl110, kModbus);
+    const simulator::ScenarioResult r =
+        runText(network, QStringLiteral("program ../plant.rungnet\n"
+                                        "at 0s expect a/SM105=1 b/SM105=1\n"
+                                        "at 100ms press b/SWAP\n"
+                                        "at 300ms expect a/SM105=1 b/SM105=2\n"));
+    EXPECT_TRUE(r.passed()) << messages(r).join(QLatin1Char('\n')).toStdString();
+    EXPECT_EQ(r.expectations.size(), 2u);
+    const simulator::ScenarioResult vigor =
+        runText(network, QStringLiteral("program ../plant.rungnet\nat 1s press v/SET\n"));
+    EXPECT_EQ(messages(vigor).join(QLatin1Char('\n')).toStdString(),
+              "2: v/SET: the Vigor has no keys on its front panel to press");
+}
