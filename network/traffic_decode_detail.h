@@ -68,6 +68,16 @@ bool verdict(const ReplyDecoder &decoder, qsizetype size, QString (*codeText)(in
 
 } // namespace decode_detail
 
+// For the two decoders' files (the only ones that include this header).
+using decode_detail::bitsText;
+using decode_detail::deviceAt;
+using decode_detail::extraText;
+using decode_detail::hex4;
+using decode_detail::quoted;
+using decode_detail::truncatedText;
+using decode_detail::verdict;
+using decode_detail::withDevice;
+
 struct TrafficDecoder::Pending {
     TrafficDecoder::End::Speaks speaks = TrafficDecoder::End::Speaks::Nothing;
     QString sender;

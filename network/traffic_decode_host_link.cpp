@@ -14,15 +14,6 @@
 
 namespace rung::network {
 
-using decode_detail::bitsText;
-using decode_detail::deviceAt;
-using decode_detail::extraText;
-using decode_detail::hex4;
-using decode_detail::quoted;
-using decode_detail::truncatedText;
-using decode_detail::verdict;
-using decode_detail::withDevice;
-
 namespace {
 
 using Speaks = TrafficDecoder::End::Speaks;
