@@ -365,6 +365,11 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         }
         break;
     }
+    case ApplyFunction::PanelFieldSet:
+    case ApplyFunction::PanelFieldFormat:
+    case ApplyFunction::PanelFieldPosition:
+        panelField(ins, s);
+        break;
     case ApplyFunction::IndirectMove: {
         // MOVIND S D INDEX: the area from D on is a vector; element INDEX (0-based) := S.
         s.code = Code::IndirectMove;
@@ -451,6 +456,89 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         s.code = Code::Nop;
         break;
     }
+}
+
+// SetPAR N STATE VAR MIN MAX, FormatPAR N TYPE DIGITS DECIMALS FILL, PosPAR N ROW COLUMN ACCESS
+// (PL110 manual 4.2.26..4.2.28): the field's words of 2.1.2 (PanelDisplay::fields: field N's
+// first word, then state, area and number of the variable (number high, low), the minimum's
+// and the maximum's area and number, type, digits, decimals, fill, row, column, access), set
+// each scan the coil is on. A variable is coded as SM107's list codes it (PanelAreaCode); a
+// constant limit is area 0 and the number itself.
+void Compiler::panelField(const model::Instruction &ins, Step &s) {
+    s.code = Code::MoveConstants;
+    const model::PanelDisplay &display = m_target.panel.display;
+    std::vector<const model::Operand *> ops;
+    for (std::size_t k = 0; k < ins.spec->operands.size(); ++k)
+        ops.push_back(operand(ins, k));
+    if (m_failed || m_muted || std::find(ops.begin(), ops.end(), nullptr) != ops.end())
+        return;
+    const qint64 field = ops[0]->constant.value;
+    if (field < 1 || field > static_cast<qint64>(display.fields.size())) {
+        error(ins, CompilerTr::tr("the display has no field %1").arg(field));
+        return;
+    }
+    const auto first =
+        model::parseAddress(m_target, display.fields[static_cast<std::size_t>(field - 1)].first);
+    const auto *base = std::get_if<model::Address>(&first);
+    if (!base)
+        return;
+    // A variable as its area's code in SM107's list and its number.
+    const auto listed = [&](const model::Operand &o, std::int32_t *code, qint64 *number) {
+        if (o.kind == model::Operand::Kind::Constant) {
+            *code = 0;
+            *number = o.constant.value;
+            return true;
+        }
+        const QString &area = m_target.area(o.address.area).key;
+        for (const model::PanelAreaCode &c : display.areaCodes)
+            if (c.area == area && o.address.bit < 0) {
+                *code = c.code;
+                *number = o.address.index;
+                return true;
+            }
+        error(ins,
+              CompilerTr::tr("%1 is not a variable a display field can show").arg(describe(o)));
+        return false;
+    };
+    std::vector<std::int32_t> words;
+    int offset = 0;
+    const auto value = [&](const model::Operand *o) {
+        words.push_back(static_cast<std::int32_t>(o->constant.value));
+    };
+    const auto coded = [&](const model::Operand &o) {
+        std::int32_t code = 0;
+        qint64 number = 0;
+        if (!listed(o, &code, &number))
+            return false;
+        words.push_back(code);
+        words.push_back(static_cast<std::int32_t>((number >> 16) & 0xffff));
+        words.push_back(static_cast<std::int32_t>(number & 0xffff));
+        return true;
+    };
+    switch (ins.spec->function) {
+    case model::ApplyFunction::PanelFieldSet:
+        value(ops[1]);
+        if (!coded(*ops[2]) || !coded(*ops[3]) || !coded(*ops[4]))
+            return;
+        break;
+    case model::ApplyFunction::PanelFieldFormat:
+        offset = 10;
+        for (std::size_t k = 1; k < 5; ++k)
+            value(ops[k]);
+        break;
+    default:
+        offset = 14;
+        for (std::size_t k = 1; k < 4; ++k)
+            value(ops[k]);
+        break;
+    }
+    model::Address at = *base;
+    at.index += offset;
+    s.dest = m_layout->word(at);
+    s.width = m_target.area(at.area).wordBits;
+    s.slot = static_cast<int>(m_program->constants.size());
+    s.count = static_cast<int>(words.size());
+    m_program->constants.insert(m_program->constants.end(), words.begin(), words.end());
 }
 
 } // namespace rung::simulator::detail

@@ -254,6 +254,7 @@ private:
     void compileTimer(const model::Instruction &ins, Step &s);
     void compileCounter(const model::Instruction &ins, Step &s);
     void compileApply(const model::Instruction &ins, Step &s);
+    void panelField(const model::Instruction &ins, Step &s); // PL110 SetPAR / FormatPAR / PosPAR
     void compileWordLogic(const model::Instruction &ins, Step &s, std::size_t sources);
     // compile_words.cpp: Vigor DMOV and CCD.
     void compileDoubleMove(const model::Instruction &ins, Step &s);

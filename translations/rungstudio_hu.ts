@@ -9790,14 +9790,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+143"/>
+        <location filename="../model/target/target_pl110.cpp" line="+204"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-401"/>
+        <location filename="../model/target/target_pl110.cpp" line="-462"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -10287,19 +10287,79 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Érték konvertálása</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Set a display parameter</source>
-        <translation>Kijelzőparaméter beállítása</translation>
+        <location line="+15"/>
+        <source>field (1..4)</source>
+        <translation>mező (1..4)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Format a display parameter</source>
-        <translation>Kijelzőparaméter formázása</translation>
+        <location line="+6"/>
+        <source>state (0 disabled, 1 shown, 2 editable)</source>
+        <translation>állapot (0 tiltott, 1 megjelenített, 2 módosítható)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Place a display parameter</source>
-        <translation>Kijelzőparaméter elhelyezése</translation>
+        <location line="+4"/>
+        <source>variable shown</source>
+        <translation>megjelenített változó</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>minimum</source>
+        <translation>minimum</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>maximum</source>
+        <translation>maximum</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Set a display field: its state, variable and limits</source>
+        <translation>Kijelzőmező beállítása: állapota, változója és határai</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>type (0 16 bit signed, 1 16 bit unsigned, 2 32 bit signed)</source>
+        <translation>típus (0 16 bites előjeles, 1 16 bites előjel nélküli, 2 32 bites előjeles)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>total digits</source>
+        <translation>számjegyek összesen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>decimals</source>
+        <translation>tizedesjegyek</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>fill (0 spaces, 1 zeros)</source>
+        <translation>kitöltés (0 szóközök, 1 nullák)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Format a display field: type, digits, decimals, fill</source>
+        <translation>Kijelzőmező formátuma: típus, számjegyek, tizedesjegyek, kitöltés</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>row (1..8)</source>
+        <translation>sor (1..8)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>column (1..22)</source>
+        <translation>oszlop (1..22)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>access (0 free, 1 password)</source>
+        <translation>hozzáférés (0 szabad, 1 jelszóval)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Place a display field: row, column and access</source>
+        <translation>Kijelzőmező elhelyezése: sor, oszlop és hozzáférés</translation>
     </message>
     <message>
         <location filename="../model/target/target_vigor.cpp" line="-656"/>
@@ -11099,7 +11159,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>csökkenti a módosítás alatt álló mezőt</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-25"/>
+        <location filename="../model/target/target_pl110.cpp" line="-89"/>
         <source>characters per word</source>
         <translation>karakter szavanként</translation>
     </message>
@@ -11743,7 +11803,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::TrafficDecode</name>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="+109"/>
+        <location filename="../network/traffic_decode.cpp" line="+100"/>
         <source>read coils</source>
         <translation>tekercsek olvasása</translation>
     </message>
@@ -11809,7 +11869,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../network/traffic_decode_host_link.cpp" line="+66"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="+57"/>
         <source>unknown command</source>
         <translation>ismeretlen parancs</translation>
     </message>
@@ -11934,7 +11994,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>CR: kérem a következő részt</translation>
     </message>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="-92"/>
+        <location filename="../network/traffic_decode.cpp" line="-83"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -11953,7 +12013,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+165"/>
+        <location line="+156"/>
         <source>MODBUS slave device</source>
         <translation>MODBUS slave eszköz</translation>
     </message>
@@ -12115,7 +12175,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+16"/>
         <location filename="../simulator/compile_steps.cpp" line="-13"/>
         <location line="+41"/>
-        <location line="+215"/>
+        <location line="+220"/>
         <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 nem írható</translation>
@@ -12204,7 +12264,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-402"/>
+        <location filename="../simulator/compile_steps.cpp" line="-407"/>
         <source>more than %1 open blocks</source>
         <translation>több mint %1 nyitott blokk</translation>
     </message>
@@ -12239,7 +12299,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a szöveg nem fér el %1 területén ettől a helytől kezdve</translation>
     </message>
     <message>
-        <location line="-71"/>
+        <location line="+114"/>
+        <source>the display has no field %1</source>
+        <translation>a kijelzőnek nincs %1. mezője</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1 is not a variable a display field can show</source>
+        <translation>%1 nem olyan változó, amelyet kijelzőmező megjeleníthet</translation>
+    </message>
+    <message>
+        <location line="-208"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
         <translation>%1 egy bitet igényel: bit típusú operandust, vagy egy szót és egy 0..15 bitszámot</translation>
     </message>

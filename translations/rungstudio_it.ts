@@ -9813,14 +9813,14 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+143"/>
+        <location filename="../model/target/target_pl110.cpp" line="+204"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-401"/>
+        <location filename="../model/target/target_pl110.cpp" line="-462"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -10310,19 +10310,79 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Converte un valore</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Set a display parameter</source>
-        <translation>Imposta un parametro del display</translation>
+        <location line="+15"/>
+        <source>field (1..4)</source>
+        <translation>campo (1..4)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Format a display parameter</source>
-        <translation>Formatta un parametro del display</translation>
+        <location line="+6"/>
+        <source>state (0 disabled, 1 shown, 2 editable)</source>
+        <translation>stato (0 disabilitato, 1 visualizzato, 2 modificabile)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Place a display parameter</source>
-        <translation>Posiziona un parametro del display</translation>
+        <location line="+4"/>
+        <source>variable shown</source>
+        <translation>variabile visualizzata</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>minimum</source>
+        <translation>minimo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>maximum</source>
+        <translation>massimo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Set a display field: its state, variable and limits</source>
+        <translation>Imposta un campo del display: stato, variabile e limiti</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>type (0 16 bit signed, 1 16 bit unsigned, 2 32 bit signed)</source>
+        <translation>tipo (0 16 bit con segno, 1 16 bit senza segno, 2 32 bit con segno)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>total digits</source>
+        <translation>numero totale di cifre</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>decimals</source>
+        <translation>cifre decimali</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>fill (0 spaces, 1 zeros)</source>
+        <translation>riempimento (0 spazi, 1 zeri)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Format a display field: type, digits, decimals, fill</source>
+        <translation>Formatta un campo del display: tipo, cifre, decimali, riempimento</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>row (1..8)</source>
+        <translation>riga (1..8)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>column (1..22)</source>
+        <translation>colonna (1..22)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>access (0 free, 1 password)</source>
+        <translation>accesso (0 libero, 1 con password)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Place a display field: row, column and access</source>
+        <translation>Posiziona un campo del display: riga, colonna e accesso</translation>
     </message>
     <message>
         <location filename="../model/target/target_vigor.cpp" line="-656"/>
@@ -11122,7 +11182,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>decrementa il campo in modifica</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-25"/>
+        <location filename="../model/target/target_pl110.cpp" line="-89"/>
         <source>characters per word</source>
         <translation>caratteri per word</translation>
     </message>
@@ -11766,7 +11826,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::TrafficDecode</name>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="+109"/>
+        <location filename="../network/traffic_decode.cpp" line="+100"/>
         <source>read coils</source>
         <translation>lettura bobine</translation>
     </message>
@@ -11832,7 +11892,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../network/traffic_decode_host_link.cpp" line="+66"/>
+        <location filename="../network/traffic_decode_host_link.cpp" line="+57"/>
         <source>unknown command</source>
         <translation>comando sconosciuto</translation>
     </message>
@@ -11957,7 +12017,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>CR: la parte successiva, prego</translation>
     </message>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="-92"/>
+        <location filename="../network/traffic_decode.cpp" line="-83"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -11978,7 +12038,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+165"/>
+        <location line="+156"/>
         <source>MODBUS slave device</source>
         <translation>dispositivo slave MODBUS</translation>
     </message>
@@ -12140,7 +12200,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+16"/>
         <location filename="../simulator/compile_steps.cpp" line="-13"/>
         <location line="+41"/>
-        <location line="+215"/>
+        <location line="+220"/>
         <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 non può essere scritto</translation>
@@ -12229,7 +12289,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-402"/>
+        <location filename="../simulator/compile_steps.cpp" line="-407"/>
         <source>more than %1 open blocks</source>
         <translation>più di %1 blocchi aperti</translation>
     </message>
@@ -12264,7 +12324,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il testo non entra nell&apos;area di %1 da lì in poi</translation>
     </message>
     <message>
-        <location line="-71"/>
+        <location line="+114"/>
+        <source>the display has no field %1</source>
+        <translation>il display non ha il campo %1</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1 is not a variable a display field can show</source>
+        <translation>%1 non è una variabile che un campo del display può visualizzare</translation>
+    </message>
+    <message>
+        <location line="-208"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
         <translation>%1 richiede un bit: un operando a bit, o una word e un numero di bit 0..15</translation>
     </message>

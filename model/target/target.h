@@ -389,6 +389,11 @@ enum class ApplyFunction : std::uint8_t {
     FreePortSend, // PL110 SEND port n (4.2.19): send n characters of the port's buffer
     MasterQuery,  // PL110 COM / EXP (4.2.21): one interrogation of the port's master
     MoveText,     // PL110 MOVTXT D n "TEXT" (4.2.10): the text's characters from D
+    // PL110 SetPAR / FormatPAR / PosPAR (4.2.26..4.2.28): the words of a display field
+    // (PanelDisplay::fields, 2.1.2 from SM118) from the instruction's operands.
+    PanelFieldSet,
+    PanelFieldFormat,
+    PanelFieldPosition,
 };
 
 // Timer behaviours beyond the plain on-delay (PL110 TOFF / TONR).

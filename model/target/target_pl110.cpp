@@ -188,12 +188,12 @@ Target makePl110Target() {
 
     // What the simulator keeps as plain memory (2.1.2): the hardware behind the special
     // markers (encoders, stepper output, clock, protocol address, filters and analog
-    // configuration, the protocols' line settings and COM2's slave markers), the timed
-    // interrupts and the display of the PL110-2A and its terminal. `check` warns at each use
-    // (SIM101). SM1 (faults) reads 0, no fault, as it should in a simulation; SM3, SM19 and
-    // SM111..SM117 are not in the manual's table. The ports' markers of COM / EXP and free-port
-    // (SM0.6..SM0.8, SM70, SM73..SM80, SM83..SM89, SM98, SM99) are simulated (PortMarkers);
-    // of a slave port, SM70 / SM80 (the link supervision) too.
+    // configuration, the protocols' line settings and COM2's slave markers) and the timed
+    // interrupts (the display and its terminal are simulated: target_pl110_panel.cpp). `check`
+    // warns at each use (SIM101). SM1 (faults) reads 0, no fault, as it should in a simulation;
+    // SM3, SM19 and SM111..SM117 are not in the manual's table. The ports' markers of COM / EXP and
+    // free-port (SM0.6..SM0.8, SM70, SM73..SM80, SM83..SM89, SM98, SM99) are simulated
+    // (PortMarkers); of a slave port, SM70 / SM80 (the link supervision) too.
     t.unmodelled = {
         {QStringLiteral("SM2"), QStringLiteral("SM2"),
          QT_TRANSLATE_NOOP("rung::model::Target",
@@ -419,7 +419,7 @@ Target makePl110Target() {
            QT_TRANSLATE_NOOP("rung::model::Target",
                              "Store a text from D: 1 or 2 characters per word, high byte first"),
            "D 1|2 \"TEXT\"");
-    // Known to the editor, not simulated (positioning, PID, display).
+    // Known to the editor, not simulated (scaling, positioning, PID).
     const OperandSpec any{K::Constant, true};
     const std::pair<const char *, const char *> boxes[] = {
         {"RANGE",
@@ -433,13 +433,74 @@ Target makePl110Target() {
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "Setpoint generator with acceleration and deceleration ramps")},
         {"CONV", QT_TRANSLATE_NOOP("rung::model::Target", "Convert a value")},
-        {"SetPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Set a display parameter")},
-        {"FormatPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Format a display parameter")},
-        {"PosPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Place a display parameter")},
     };
     for (const auto &[name, summary] : boxes)
         addBox(t, name, ApplyFunction::NotSimulated, {any, any, any, any, any, any}, summary,
                "...");
+    // SetPAR, FormatPAR, PosPAR (4.2.26..4.2.28): one of the four numeric fields of the
+    // PL110-2A's user pages, its parameters in the manual's order, written into the field's
+    // words of 2.1.2 (from SM118, 17 a field) each scan the coil is on. The state, the type,
+    // the fill and the access are the numbers those words hold (0 disabled, 1 shown, 2
+    // editable; 0 16 bit signed, 1 16 bit unsigned, 2 32 bit signed; 0 spaces, 1 zeros; 0 free,
+    // 1 after the user password) *(choice: PLProg's boxes show them as words, the listing is
+    // the product's)*. The variable and a variable limit are of the areas of SM107's list.
+    OperandSpec field{K::Constant};
+    field.lowest = 1;
+    field.highest = 4;
+    field.name = QT_TRANSLATE_NOOP("rung::model::Target", "field (1..4)");
+    const std::vector<const char *> listed = {"V",  "SM", "VD", "SMD", "AI",  "TR",  "AQ",
+                                              "PT", "PV", "T",  "C",   "EEP", "MMC", "DISP"};
+    OperandSpec state{K::Constant};
+    state.allowedValues = {0, 1, 2};
+    state.name =
+        QT_TRANSLATE_NOOP("rung::model::Target", "state (0 disabled, 1 shown, 2 editable)");
+    OperandSpec variable{K::WordSource};
+    variable.deviceOnly = true;
+    variable.sourceAreas = listed;
+    variable.name = QT_TRANSLATE_NOOP("rung::model::Target", "variable shown");
+    OperandSpec lowest{K::WordSource};
+    lowest.sourceAreas = listed;
+    lowest.name = QT_TRANSLATE_NOOP("rung::model::Target", "minimum");
+    OperandSpec highest = lowest;
+    highest.name = QT_TRANSLATE_NOOP("rung::model::Target", "maximum");
+    addBox(t, "SetPAR", ApplyFunction::PanelFieldSet, {field, state, variable, lowest, highest},
+           QT_TRANSLATE_NOOP("rung::model::Target",
+                             "Set a display field: its state, variable and limits"),
+           "N STATE VAR MIN MAX");
+    OperandSpec type{K::Constant};
+    type.allowedValues = {0, 1, 2};
+    type.name = QT_TRANSLATE_NOOP("rung::model::Target",
+                                  "type (0 16 bit signed, 1 16 bit unsigned, 2 32 bit signed)");
+    OperandSpec digits{K::Constant};
+    digits.lowest = 1;
+    digits.highest = 12;
+    digits.name = QT_TRANSLATE_NOOP("rung::model::Target", "total digits");
+    OperandSpec decimals{K::Constant};
+    decimals.lowest = 0;
+    decimals.highest = 10;
+    decimals.name = QT_TRANSLATE_NOOP("rung::model::Target", "decimals");
+    OperandSpec fill{K::Constant};
+    fill.allowedValues = {0, 1};
+    fill.name = QT_TRANSLATE_NOOP("rung::model::Target", "fill (0 spaces, 1 zeros)");
+    addBox(t, "FormatPAR", ApplyFunction::PanelFieldFormat, {field, type, digits, decimals, fill},
+           QT_TRANSLATE_NOOP("rung::model::Target",
+                             "Format a display field: type, digits, decimals, fill"),
+           "N TYPE DIGITS DECIMALS FILL");
+    OperandSpec row{K::Constant};
+    row.lowest = 1;
+    row.highest = 8;
+    row.name = QT_TRANSLATE_NOOP("rung::model::Target", "row (1..8)");
+    OperandSpec column{K::Constant};
+    column.lowest = 1;
+    column.highest = 22;
+    column.name = QT_TRANSLATE_NOOP("rung::model::Target", "column (1..22)");
+    OperandSpec access{K::Constant};
+    access.allowedValues = {0, 1};
+    access.name = QT_TRANSLATE_NOOP("rung::model::Target", "access (0 free, 1 password)");
+    addBox(
+        t, "PosPAR", ApplyFunction::PanelFieldPosition, {field, row, column, access},
+        QT_TRANSLATE_NOOP("rung::model::Target", "Place a display field: row, column and access"),
+        "N ROW COLUMN ACCESS");
     addSpec(t, "END", Op::End, {}, QT_TRANSLATE_NOOP("rung::model::Target", "End of the program"));
 
     // The PL110 manual gives no program size; 4096 elements is the product's choice

@@ -2,6 +2,7 @@
 // traces in tests/data/sim/pl110_*.il do not pin.
 
 #include "model/checks/checks.h"
+#include "model/image/panel_view.h"
 #include "real_target_sim.h"
 
 #include <gtest/gtest.h>
@@ -634,4 +635,52 @@ TEST(Pl110Movtxt, TwoCharactersAWordStartAtTheHighByte) {
     EXPECT_EQ(s.value("V10"), 0x4142);
     EXPECT_EQ(s.value("V11"), 0x4300);
     EXPECT_EQ(s.value("V12"), 0);
+}
+
+// PL110 manual 5.4's page 18: "SetPAR1 [Modifiable, Par = VW0, Min = #0, Max = #1400]",
+// "FormatPAR1 [16 bit signed, Tot7, Dec1, Spaces]", "PosPAR1 [Row4, Column10, Free]" (4.2.26
+// ..4.2.28): field 1's words of 2.1.2 from SM118 (state, the variable's area in SM107's list
+// and number high / low, the limits' likewise, type, digits, decimals, fill, row, column,
+// access), written while the coils' condition is ON; the terminal then shows VW0 = 250 as
+// "25.0" in row 4 from column 10.
+TEST(Pl110Terminal, SetParFormatParAndPosParWriteTheFieldsWords) {
+    Pl110 s("LD I1\nSetPAR 1 2 VW0 0 1400\nLD I1\nFormatPAR 1 0 7 1 0\nLD I1\nPosPAR 1 4 10 "
+            "0\nLD I1\nSetPAR 2 1 AI1 V10 #99\nLD I1\nPosPAR 2 6 10 0\nEND");
+    ASSERT_TRUE(s.result.ok());
+    EXPECT_TRUE(s.result.diagnostics.empty()) << s.result.diagnostics.front().message.toStdString();
+    s.engine->scan();
+    EXPECT_EQ(s.value("SM118"), 0) << "nothing written while the condition is OFF";
+    s.engine->setBit(s.at("I1"), true);
+    s.engine->scan();
+    std::vector<int> field1;
+    for (int k = 118; k < 135; ++k)
+        field1.push_back(s.value(QStringLiteral("SM%1").arg(k).toLatin1().constData()));
+    EXPECT_EQ(field1, (std::vector<int>{2, 1, 0, 0, 0, 0, 0, 0, 0, 1400, 0, 7, 1, 0, 4, 10, 0}));
+    // Field 2 (from SM135): AI1 is area 3 number 1, the minimum V10 (area 1, 10).
+    std::vector<int> field2;
+    for (int k = 135; k < 145; ++k)
+        field2.push_back(s.value(QStringLiteral("SM%1").arg(k).toLatin1().constData()));
+    EXPECT_EQ(field2, (std::vector<int>{1, 3, 0, 1, 1, 0, 10, 0, 0, 99}));
+
+    // Field 2 in row 6 (at power-on the fields stand in rows 2, 4, 6, 8 at column 15).
+    s.engine->writeWord(s.at("VW0"), 250);
+    s.engine->writeWord(s.at("SM105"), 18);
+    const model::Snapshot shot = s.engine->snapshot();
+    model::PanelInput in;
+    in.snapshot = &shot;
+    in.runState = model::MonitorSource::RunState::Running;
+    const model::PanelView view =
+        model::panelView(s.target, s.target.model(QStringLiteral("PL110-2A")), in);
+    ASSERT_GE(view.lines.size(), 4);
+    EXPECT_EQ(view.lines[3], QStringLiteral("             25.0    "))
+        << view.lines.join(u'|').toStdString();
+}
+
+// A field the display does not have, and a variable that is not in SM107's list, do not
+// compile; the table's ranges are `check`'s.
+TEST(Pl110Terminal, SetParRefusesWhatTheFieldCannotHold) {
+    Pl110 bit("LD I1\nSetPAR 1 2 Q1 0 10\nEND");
+    EXPECT_FALSE(bit.result.ok());
+    Pl110 row("LD I1\nPosPAR 1 9 10 0\nEND");
+    EXPECT_FALSE(row.result.ok());
 }
