@@ -5,6 +5,7 @@
 // beside the same eight engines scanning alone in the same run, alternating, and reports
 // their ratio (the network's cost: the CPU Link exchange, the clock, the ports), limit 1.10.
 
+#include "median_limit.h"
 #include "network_program.h"
 #include "smoke.h"
 
@@ -25,6 +26,9 @@ namespace {
 using namespace rung;
 
 using bench::thousandSteps;
+
+// The ratio benchmarks' repetitions: their limits are on the median (bench::MedianLimit).
+const int kRatioRepetitions = bench::times(5);
 
 network::ProgramLoader loader(bool busy = false) {
     return [busy](const network::StationDescription &s, network::LoadedStation *loaded,
@@ -144,9 +148,8 @@ void BM_NetworkCostRatio(benchmark::State &state) {
     }
     const double ratio = std::chrono::duration<double>(inNetwork).count() /
                          std::max(1e-12, std::chrono::duration<double>(alone).count());
-    state.counters["ratio"] = ratio;
-    if (bench::judgesTime() && ratio > 1.10)
-        state.SkipWithError("the network costs more than 1.10x the plain scans");
+    static bench::MedianLimit limit("BM_NetworkCostRatio", kRatioRepetitions);
+    limit.judge(state, "ratio", ratio, 1.10, "the network against the plain scans");
 }
 
 // History across the network (network/network_history.h): the same eight stations run in two
@@ -192,20 +195,15 @@ void BM_NetworkHistoryRatio(benchmark::State &state) {
     }
     const double ratio = std::chrono::duration<double>(withHistory).count() /
                          std::max(1e-12, std::chrono::duration<double>(without).count());
-    state.counters["ratio"] = ratio;
     // Recorded exactly: the newest instant is the network as it is.
     const auto now = history.stationAt(3, recorded->nowUs());
-    if (!now ||
-        now->words != std::vector<std::int32_t>(recorded->stations()[3]->engine().words().begin(),
-                                                recorded->stations()[3]->engine().words().end())) {
-        state.SkipWithError("the history does not show the network as it is");
-        return;
-    }
-    if (bench::judgesTime() && ratio > (busy ? 1.5 : 1.25)) {
-        const std::string why =
-            "recording the history costs more than its limit: " + std::to_string(ratio);
-        state.SkipWithError(why.c_str());
-    }
+    const bool exact = now && now->words == std::vector<std::int32_t>(
+                                                recorded->stations()[3]->engine().words().begin(),
+                                                recorded->stations()[3]->engine().words().end());
+    static bench::MedianLimit limits[2] = {{"BM_NetworkHistoryRatio/0", kRatioRepetitions},
+                                           {"BM_NetworkHistoryRatio/1", kRatioRepetitions}};
+    limits[busy].judge(state, "ratio", ratio, busy ? 1.5 : 1.25, "recording the history",
+                       exact ? "" : "the history does not show the network as it is");
 }
 
 // A minute of virtual time of the eight stations recorded (6,000 slices of 10 ms): the memory
@@ -252,15 +250,12 @@ void BM_NetworkHistoryMinute(benchmark::State &state) {
 } // namespace
 
 BENCHMARK(BM_NetworkCpuLink8)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_NetworkCostRatio)
-    ->Unit(benchmark::kMillisecond)
-    ->Repetitions(rung::bench::times(5))
-    ->DisplayAggregatesOnly(true);
+// Every repetition's row is shown (DisplayAggregatesOnly would hide the last one's error).
+BENCHMARK(BM_NetworkCostRatio)->Unit(benchmark::kMillisecond)->Repetitions(kRatioRepetitions);
 BENCHMARK(BM_NetworkHistoryRatio)
     ->Arg(0)
     ->Arg(1)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(rung::bench::times(5))
-    ->DisplayAggregatesOnly(true);
+    ->Repetitions(kRatioRepetitions);
 BENCHMARK(BM_NetworkHistoryMinute)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_MAIN();
