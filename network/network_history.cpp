@@ -197,6 +197,7 @@ struct NetworkHistory::Worker {
         std::vector<std::int32_t> words;
         std::vector<std::uint32_t> forceMask;
         std::vector<std::uint32_t> forceValue;
+        bool forced = false; // any bit of forceMask set (a key looks for them only then)
         std::vector<std::uint8_t> flow;
         bool flowRecorded = false;
         // The words a scan of its program can write (simulator/scan_writes.h); none: any.
@@ -282,6 +283,8 @@ void NetworkHistory::record(const Network &network, bool commands) {
             if (s.forceMask != prev.forceMask || s.forceValue != prev.forceValue) {
                 prev.forceMask = s.forceMask;
                 prev.forceValue = s.forceValue;
+                prev.forced = std::any_of(s.forceMask.begin(), s.forceMask.end(),
+                                          [](std::uint32_t m) { return m != 0; });
                 key = true;
             }
         }
@@ -357,7 +360,9 @@ void NetworkHistory::record(const Network &network, bool commands) {
             k->words.assign(s.words.begin(), s.words.end());
             k->forceWords = s.forceMask.size();
             const std::uint32_t *mask = s.forceMask.data();
-            for (std::size_t b = 0; b < s.forceMask.size(); b += 64) {
+            // Read only when some bit is forced: the mask is a word an image word, and
+            // reading it whole made a key twice the memory traffic of its copy.
+            for (std::size_t b = 0; s.forced && b < s.forceMask.size(); b += 64) {
                 const std::size_t e = std::min(s.forceMask.size(), b + 64);
                 std::uint32_t any = 0; // a block without forced bits at vector speed
                 for (std::size_t i = b; i < e; ++i)
