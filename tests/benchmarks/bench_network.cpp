@@ -159,7 +159,7 @@ void BM_NetworkCostRatio(benchmark::State &state) {
     const double ratio = std::chrono::duration<double>(inNetwork).count() /
                          std::max(1e-12, std::chrono::duration<double>(alone).count());
     static bench::MedianLimit limit("BM_NetworkCostRatio", kRatioRepetitions);
-    limit.judge(state, "ratio", ratio, 1.10, "the network against the plain scans");
+    limit.judge(state, "ratio", ratio, 1.10, "the network's turn beside the plain scans");
 }
 
 // History across the network (network/network_history.h): the same eight stations run in two
