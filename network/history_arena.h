@@ -1,12 +1,13 @@
 #pragma once
 
-// Memory for the network's history (network_history.h): its instants' changes and its keys'
-// words, taken from chunks of 2 MB in the order they are recorded, in huge pages where the
-// kernel gives them (madvise). A recording writes fresh memory all the time, and each 4 KB
-// page of it first touched was a page fault: with busy programs most of the time
-// BM_NetworkHistoryRatio/1 took beyond its instructions (docs/performance.md). A chunk goes
-// when everything in it is freed (the oldest instants go first, so chunks empty in order);
-// a few empty ones are kept for the next.
+// Memory for the network's history (network_history.h): its instants (the deque's blocks),
+// their changes and its keys' words, taken from chunks of 2 MB in the order they are
+// recorded, in huge pages where the kernel gives them (madvise). A recording writes fresh
+// memory all the time, and each 4 KB page of it first touched was a page fault: with busy
+// programs most of the time BM_NetworkHistoryRatio/1 took beyond its instructions, and the
+// deque's blocks from the heap 20 faults a block of 1,000 slices in /0 (docs/performance.md).
+// A chunk goes when everything in it is freed (the oldest instants go first, so chunks empty
+// in order); a few empty ones are kept for the next.
 //
 // One thread at a time: the one that records (allocations and the instants it drops).
 

@@ -6,8 +6,14 @@
 #include "simulator/scan_writes.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstring>
+#include <span>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace rung::network {
 
@@ -26,9 +32,10 @@ template <std::size_t N>
 constexpr std::uint32_t kRun = 0x80000000u; // a word change's index: a run follows
 
 // The most appendChangedWords writes for an image of n words: a pair a word, or a run of one
-// (three words) for the last word of a group of 8 and a pair for each other.
+// (three words) for the last word of a group of 8 and a pair for each other; and 8 more, as a
+// run's values are copied 8 words at a time (encodeGroup).
 constexpr std::size_t encodedBound(std::size_t n) {
-    return 2 * n + n / 8 + 8;
+    return 2 * n + n / 8 + 16;
 }
 
 // Where appendChangedWords writes: the end of what it wrote, and the run open there.
@@ -49,8 +56,31 @@ template <std::size_t L>
     if constexpr (L != 0)
         length = L;
     std::uint32_t changed = 0;
-    for (std::size_t k = 0; k < length; ++k)
-        changed |= static_cast<std::uint32_t>(old[g + k] != now[g + k]) << k;
+#if defined(__SSE2__)
+    if constexpr (L == 8) {
+        // Which of the 8 differ: two compares and their sign masks (the loop below, which the
+        // compiler left scalar, was a third of this function's instructions).
+        const auto load = [](const std::int32_t *p) {
+            return _mm_loadu_si128(reinterpret_cast<const __m128i *>(p));
+        };
+        const __m128i lo = _mm_cmpeq_epi32(load(old + g), load(now + g));
+        const __m128i hi = _mm_cmpeq_epi32(load(old + g + 4), load(now + g + 4));
+        const int same =
+            _mm_movemask_ps(_mm_castsi128_ps(lo)) | (_mm_movemask_ps(_mm_castsi128_ps(hi)) << 4);
+        changed = ~static_cast<std::uint32_t>(same) & 0xffu;
+    } else
+#endif
+    {
+        for (std::size_t k = 0; k < length; ++k)
+            changed |= static_cast<std::uint32_t>(old[g + k] != now[g + k]) << k;
+    }
+    // The group's words and 8 zeros after them: a run's values are copied 8 words at a time
+    // from here (the words after the run are written over next, or left beyond the end). A
+    // copy of `count` words called the library's memcpy: a third of the recording's
+    // instructions in BM_NetworkHistoryRatio/1.
+    std::int32_t group[16] = {};
+    if constexpr (L != 0)
+        std::memcpy(group, now + g, L * sizeof(std::int32_t));
     while (changed != 0) {
         const int from = std::countr_zero(changed);
         const int ones = std::countr_one(changed >> from);
@@ -71,7 +101,10 @@ template <std::size_t L>
             e.run = e.out + 1;
             e.out += 2;
         }
-        std::memcpy(e.out, now + first, count * sizeof(std::uint32_t));
+        if constexpr (L != 0)
+            std::memcpy(e.out, group + from, L * sizeof(std::uint32_t));
+        else
+            std::memcpy(e.out, now + first, count * sizeof(std::uint32_t));
         e.out += count;
         e.runEnd = first + count;
     }
@@ -179,15 +212,82 @@ template <typename C> void skipStation(const C &c, std::size_t &p) {
 
 struct NetworkHistory::Key {
     explicit Key(HistoryArena *arena)
-        : words(HistoryAllocator<std::int32_t>(arena)) {}
+        : held(HistoryAllocator<std::uint64_t>(arena))
+        , words(HistoryAllocator<std::int32_t>(arena)) {}
+    // The image's words, kept for the blocks of 64 that hold any word not 0 (a program uses a
+    // few hundred of a VB's ten thousand; a key of every word was half of what a history
+    // wrote, all of it fresh memory): held has a bit a block (bit b of held[i]: block 64 i +
+    // b), words the blocks held, in order (the image's last block as long as it is).
+    std::size_t size = 0; // words in the image
+    std::vector<std::uint64_t, HistoryAllocator<std::uint64_t>> held;
     std::vector<std::int32_t, HistoryAllocator<std::int32_t>> words;
+    static constexpr std::size_t kBlock = 64;
+
+    // The key of the image `image`.
+    void take(std::span<const std::int32_t> image) {
+        size = image.size();
+        const std::size_t blocks = (size + kBlock - 1) / kBlock;
+        held.assign((blocks + 63) / 64, 0);
+        std::size_t kept = 0;
+        for (std::size_t b = 0; b < blocks; ++b) {
+            const std::size_t first = b * kBlock;
+            const std::size_t n = std::min(kBlock, size - first);
+            bool any = false;
+            if (n == kBlock) {
+                any = wordsDiffer<kBlock>(image.data() + first, kZeros.data());
+            } else {
+                for (std::size_t i = 0; i < n; ++i)
+                    any = any || image[first + i] != 0;
+            }
+            if (any) {
+                held[b / 64] |= std::uint64_t(1) << (b % 64);
+                kept += n;
+            }
+        }
+        words.reserve(kept);
+        forEachBlock([&](std::size_t first, std::size_t n, std::size_t) {
+            words.insert(words.end(), image.begin() + std::ptrdiff_t(first),
+                         image.begin() + std::ptrdiff_t(first + n));
+        });
+    }
+    // Calls f(first word, its count, where it is in words) for each block held, rising.
+    template <typename F> void forEachBlock(F f) const {
+        std::size_t at = 0;
+        for (std::size_t i = 0; i < held.size(); ++i)
+            for (std::uint64_t bits = held[i]; bits != 0; bits &= bits - 1) {
+                const std::size_t first =
+                    (i * 64 + static_cast<std::size_t>(std::countr_zero(bits))) * kBlock;
+                const std::size_t n = std::min(kBlock, size - first);
+                f(first, n, at);
+                at += n;
+            }
+    }
+    // The image as the key keeps it.
+    template <typename V> void copyTo(V &out) const {
+        out.assign(size, 0);
+        forEachBlock([&](std::size_t first, std::size_t n, std::size_t at) {
+            std::copy_n(words.begin() + std::ptrdiff_t(at), n, out.begin() + std::ptrdiff_t(first));
+        });
+    }
+    // One word of it (index < size).
+    std::int32_t word(std::size_t index) const {
+        const std::size_t b = index / kBlock;
+        const std::uint64_t bit = std::uint64_t(1) << (b % 64);
+        if ((held[b / 64] & bit) == 0)
+            return 0;
+        std::size_t rank = static_cast<std::size_t>(std::popcount(held[b / 64] & (bit - 1)));
+        for (std::size_t i = 0; i < b / 64; ++i)
+            rank += static_cast<std::size_t>(std::popcount(held[i]));
+        return words[rank * kBlock + index % kBlock];
+    }
+    static constexpr std::array<std::int32_t, kBlock> kZeros{};
     // The forced bits, a mask and a value a word, kept for the words that have any: (index,
     // mask, value) each (a key of the whole image would be three times its words).
     std::vector<std::uint32_t> forces;
     std::size_t forceWords = 0;     // the size of the snapshot's forceMask and forceValue
     std::vector<std::uint8_t> flow; // empty: power flow not recorded then
     std::size_t bytes() const {
-        return sizeof(Key) + words.size() * 4 + forces.size() * 4 + flow.size();
+        return sizeof(Key) + held.size() * 8 + words.size() * 4 + forces.size() * 4 + flow.size();
     }
 };
 
@@ -197,6 +297,7 @@ struct NetworkHistory::Worker {
         std::vector<std::int32_t> words;
         std::vector<std::uint32_t> forceMask;
         std::vector<std::uint32_t> forceValue;
+        bool forced = false; // any bit of forceMask set (a key looks for them only then)
         std::vector<std::uint8_t> flow;
         bool flowRecorded = false;
         // The words a scan of its program can write (simulator/scan_writes.h); none: any.
@@ -282,6 +383,8 @@ void NetworkHistory::record(const Network &network, bool commands) {
             if (s.forceMask != prev.forceMask || s.forceValue != prev.forceValue) {
                 prev.forceMask = s.forceMask;
                 prev.forceValue = s.forceValue;
+                prev.forced = std::any_of(s.forceMask.begin(), s.forceMask.end(),
+                                          [](std::uint32_t m) { return m != 0; });
                 key = true;
             }
         }
@@ -348,16 +451,20 @@ void NetworkHistory::record(const Network &network, bool commands) {
         changes[flowAt] = static_cast<std::uint32_t>(changes.size() - flowAt - 1);
     }
     if (key) {
+        // The next key when the changes since this one cost as much as a key of every word
+        // (a rebuild then applies at most about an image's bytes of changes to the key).
         std::size_t keyBytes = 0;
         instant.keys.reserve(stations.size());
         for (const auto &station : stations)
             instant.statistics.push_back(station->engine().statistics());
         for (const Worker::Station &s : w.stations) {
             auto k = std::make_shared<Key>(m_arena.get());
-            k->words.assign(s.words.begin(), s.words.end());
+            k->take(s.words);
             k->forceWords = s.forceMask.size();
             const std::uint32_t *mask = s.forceMask.data();
-            for (std::size_t b = 0; b < s.forceMask.size(); b += 64) {
+            // Read only when some bit is forced: the mask is a word an image word, and
+            // reading it whole made a key twice the memory traffic of its copy.
+            for (std::size_t b = 0; s.forced && b < s.forceMask.size(); b += 64) {
                 const std::size_t e = std::min(s.forceMask.size(), b + 64);
                 std::uint32_t any = 0; // a block without forced bits at vector speed
                 for (std::size_t i = b; i < e; ++i)
@@ -370,7 +477,8 @@ void NetworkHistory::record(const Network &network, bool commands) {
                                          {static_cast<std::uint32_t>(i), mask[i], s.forceValue[i]});
             }
             k->flow = s.flow;
-            keyBytes += k->bytes();
+            keyBytes +=
+                s.words.size() * sizeof(std::int32_t) + k->forces.size() * 4 + k->flow.size();
             instant.keys.push_back(std::move(k));
         }
         w.keyBytes = keyBytes;
@@ -441,7 +549,7 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
     const Key &key = *m_instants[k].keys[station];
     model::Snapshot s;
     s.layout = m_layouts[station];
-    s.words.assign(key.words.begin(), key.words.end());
+    key.copyTo(s.words);
     s.forceMask.assign(key.forceWords, 0);
     s.forceValue.assign(key.forceWords, 0);
     for (std::size_t f = 0; f < key.forces.size(); f += 3) {
@@ -508,14 +616,14 @@ std::vector<NetworkHistory::WordValue> NetworkHistory::wordValues(std::size_t st
     std::size_t k = first;
     while (m_instants[k].keys.empty())
         --k;
-    if (word >= m_instants[k].keys[station]->words.size())
+    if (word >= m_instants[k].keys[station]->size)
         return out;
     WordValue now;
     for (std::size_t j = k; j < m_instants.size(); ++j) {
         const Instant &instant = m_instants[j];
         now.us = instant.us;
         if (!instant.keys.empty()) {
-            now.value = instant.keys[station]->words[word];
+            now.value = instant.keys[station]->word(word);
             now.scans = instant.statistics[station].scans;
             now.timeMs = instant.statistics[station].timeMs;
         } else {

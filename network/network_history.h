@@ -10,14 +10,16 @@
 // the wires. What the views show of a station is its image, its forced bits, its statistics
 // and the power flow of its last scan, so that is what is kept: after each slice of virtual
 // time, every station's words that changed since the slice before (a few dozen in a scan of a
-// typical program), and now and then a full copy of every station (a key) from which the
-// changes run on. Showing an instant copies the key at or before it and applies the changes
-// up to it: what is shown is what the station held then, word for word, by construction.
+// typical program), and now and then a copy of every station (a key: the blocks of its image
+// that are not all 0) from which the changes run on. Showing an instant copies the key at or
+// before it and applies the changes up to it: what is shown is what the station held then,
+// word for word, by construction.
 //
 // The window is bounded by memory: once the record passes Limits::maxBytes, the oldest key
 // and the changes that run from it go. A key is taken every Limits::keyEvery instants, when
-// the changes since the last one have cost as much as a key, and whenever a station's forced
-// bits or its power-flow recording changed, so a rebuild applies at most keyEvery changes.
+// the changes since the last one have cost as much as a copy of every word, and whenever a
+// station's forced bits or its power-flow recording changed, so a rebuild applies at most
+// keyEvery changes.
 //
 // Cost: finding the changed words compares, of each station, only the words a scan of its
 // program can write (simulator/scan_writes.h: its destinations, the system devices, the
@@ -105,7 +107,7 @@ public:
     std::uint64_t generation() const;
 
 private:
-    struct Key; // a full copy of one station
+    struct Key; // a copy of one station (its image's blocks that are not all 0)
     struct Instant {
         qint64 us = 0;
         // Per station, when this instant is a key; else empty.
@@ -132,10 +134,14 @@ private:
     Limits m_limits;
     std::unique_ptr<Worker> m_worker;
     mutable std::mutex m_mutex;
-    // The instants' changes and the keys' words (history_arena.h); before m_instants, so that
-    // it goes after them.
+    // The instants themselves (the deque's blocks), their changes and the keys' words
+    // (history_arena.h); before m_instants, so that it goes after them.
     std::unique_ptr<HistoryArena> m_arena = std::make_unique<HistoryArena>();
-    std::deque<Instant> m_instants; // the front one is a key
+    // The front one is a key. Its blocks from the arena: from the heap, each 512 bytes of
+    // them (5 instants) was fresh memory while the history grew, and a 4 KB page first
+    // touched a page fault, about 20 a block of 1,000 slices in BM_NetworkHistoryRatio/0.
+    std::deque<Instant, HistoryAllocator<Instant>> m_instants{
+        HistoryAllocator<Instant>(m_arena.get())};
     std::vector<std::shared_ptr<const model::MemoryLayout>> m_layouts;
     std::size_t m_bytes = 0;
     std::size_t m_keys = 0;

@@ -298,10 +298,20 @@ TEST(NetworkHistory, AValueArrivingInAnotherStationIsShownAtTheInstantItArrived)
 TEST(NetworkHistory, OverItsBudgetTheOldestGoAndTheRestIsShownExactly) {
     std::unique_ptr<Network> net = buildForHistory(kHistoryEasyLink);
     ASSERT_TRUE(net);
-    // Room for a few keys of the three VBs and their changes.
-    NetworkHistory probe;
-    probe.start(*net);
-    const std::size_t key = probe.window().bytes;
+    // Room for a few keys of the three VBs and their changes: what the first 50 instants (a
+    // key and the changes that run from it) take, four times.
+    std::size_t key = 0;
+    {
+        std::unique_ptr<Network> probeNet = buildForHistory(kHistoryEasyLink);
+        ASSERT_TRUE(probeNet);
+        NetworkHistory probe(NetworkHistory::Limits{std::size_t(1) << 30, 50});
+        probe.start(*probeNet);
+        for (int k = 1; k < 50; ++k) {
+            probeNet->runUntil(k * 10'000);
+            probe.record(*probeNet, false);
+        }
+        key = probe.window().bytes;
+    }
     NetworkHistory history(NetworkHistory::Limits{4 * key, 50});
     history.start(*net);
     std::vector<LiveInstant> live{captureLive(*net)};
