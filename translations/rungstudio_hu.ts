@@ -1370,7 +1370,7 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::FrontPanelController</name>
     <message>
-        <location filename="../app/gui/front_panel_controller.cpp" line="+56"/>
+        <location filename="../app/gui/front_panel_controller.cpp" line="+65"/>
         <source>Front Panel</source>
         <translation>Előlap</translation>
     </message>
@@ -3171,7 +3171,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+171"/>
         <source>&amp;Errors only</source>
         <translation>Csak &amp;hibák</translation>
     </message>
@@ -3211,7 +3211,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>Minden állomás</translation>
     </message>
     <message numerus="yes">
-        <location line="+87"/>
+        <location line="+129"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n keret</numerusform>
@@ -3317,7 +3317,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>a beállítások hibásak</translation>
     </message>
     <message>
-        <location filename="../app/gui/network_view.cpp" line="+196"/>
+        <location filename="../app/gui/network_view.cpp" line="+209"/>
         <source>bridge: failed (%1)</source>
         <extracomment>a bridge whose line did not open; the tooltip says why</extracomment>
         <translation>híd: hibás (%1)</translation>
@@ -3369,7 +3369,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>%1. állomás, %2</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+154"/>
         <source>dashed: no frames on the wire (the manual does not publish them)</source>
         <translation>szaggatott: a vezetéken nincsenek keretek (a kézikönyv nem közli őket)</translation>
     </message>
@@ -3896,7 +3896,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>PLC-hálózatok (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+72"/>
         <source>No network</source>
         <translation>Nincs hálózat</translation>
     </message>
@@ -6430,7 +6430,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+368"/>
+        <location filename="../editor/front_panel.cpp" line="+376"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (billentyű: %3; lenyomva tartva %4 = 1)</translation>
     </message>
@@ -6440,7 +6440,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: %2 (ide ír: %3)</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>This PLC has no front panel that its manual describes</source>
         <translation>Ennek a PLC-nek a kézikönyve nem ír le előlapot</translation>
     </message>
@@ -8608,7 +8608,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::PanelView</name>
     <message>
-        <location filename="../model/image/panel_view.cpp" line="+130"/>
+        <location filename="../model/image/panel_view.cpp" line="+131"/>
         <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
         <translation>%1. kijelzési mód: a kézikönyv a(z) %2. módot (egy %3 jegyű érték) és a(z) %4. módot (két %5 jegyű érték) írja le</translation>
     </message>
@@ -8618,12 +8618,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %1 által megnevezett regiszter (%2) nem létezik</translation>
     </message>
     <message>
-        <location line="+216"/>
+        <location line="+110"/>
+        <source>Application &quot;%1&quot;; the ports&apos; protocols as their settings give them</source>
+        <translation>Alkalmazás: „%1”; a portok protokolljai a beállításaik szerint</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The application&apos;s name and the ports&apos; protocols are not known here: shown as dashes</source>
+        <translation>Az alkalmazás neve és a portok protokolljai itt nem ismertek: kötőjel jelzi őket</translation>
+    </message>
+    <message>
+        <location line="+154"/>
         <source>No page is shown: the program enables none</source>
         <translation>Nincs megjelenített oldal: a program egyet sem engedélyez</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_panel.cpp" line="+135"/>
+        <location filename="../model/target/target_pl110_panel.cpp" line="+139"/>
         <source>System info: the simulator has no BOOT or firmware version (shown as a dash); the slave address is SMW4, changed with the keys after the system password 1357</source>
         <translation>Rendszerinformáció: a szimulátornak nincs BOOT- és firmware-verziója (kötőjel jelzi); a slave címe az SMW4, a gombokkal az 1357-es rendszerjelszó megadása után módosítható</translation>
     </message>
@@ -9968,17 +9978,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>MODBUS RTU slave</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
         <source>MODBUS RTU master (COM / EXP)</source>
         <translation>MODBUS RTU master (COM / EXP)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>NAIS MATSUSHITA-MASTER (COM / EXP, no frames)</source>
         <translation>NAIS MATSUSHITA-MASTER (COM / EXP, keretek nélkül)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>COM1, the RS-485 port</source>
         <translation>COM1, az RS-485 port</translation>
     </message>
@@ -11072,7 +11082,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>világít, ha programhiba leállította a PLC-t</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_panel.cpp" line="-120"/>
+        <location filename="../model/target/target_pl110_panel.cpp" line="-124"/>
         <source>steady: the PLC is in RUN; slow blink (0.5 s on, 0.5 s off): no ladder program runs</source>
         <translation>folyamatosan világít: a PLC RUN üzemmódban van; lassan villog (0,5 s be, 0,5 s ki): nem fut létraprogram</translation>
     </message>
@@ -11265,7 +11275,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::EngineImage</name>
     <message>
-        <location filename="../network/engine_image.cpp" line="+38"/>
+        <location filename="../network/engine_image.cpp" line="+67"/>
         <source>a station of a network keeps running: it is not stopped from its port</source>
         <translation>a hálózat állomása tovább fut: a portjáról nem állítható le</translation>
     </message>
@@ -11602,7 +11612,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+328"/>
+        <location filename="../network/network_session.cpp" line="+335"/>
         <source>a fault made in the IDE</source>
         <translation>az IDE-ben okozott hiba</translation>
     </message>
@@ -11635,7 +11645,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::SharedLink</name>
     <message>
-        <location filename="../network/shared_link.cpp" line="+240"/>
+        <location filename="../network/shared_link.cpp" line="+252"/>
         <source>CPU Link exchange among %1 (%2 ms); no frames: the manual does not publish them</source>
         <translation>CPU Link adatcsere: %1 (%2 ms); keretek nélkül: a kézikönyv nem közli őket</translation>
     </message>
