@@ -291,6 +291,11 @@ void FrontPanel::setMonitorSource(model::MonitorSource *source) {
     refresh();
 }
 
+void FrontPanel::setContext(std::optional<model::PanelContext> context) {
+    m_context = std::move(context);
+    refresh();
+}
+
 void FrontPanel::rebuild() {
     for (PanelLamp *l : m_lamps)
         delete l;
@@ -404,6 +409,7 @@ void FrontPanel::refresh() {
     input.runState = m_source ? m_source->runState() : model::MonitorSource::RunState::Offline;
     input.fault = m_source && !m_source->errorText().isEmpty();
     input.nowMs = m_clock.elapsed();
+    input.context = m_context ? &*m_context : nullptr;
     if (snapshot && hasPanel) {
         model::terminalTick(*m_target, *snapshot, m_terminal, input.nowMs);
         input.terminal = &m_terminal;

@@ -15,6 +15,7 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <optional>
 #include <vector>
 
 class QDial;
@@ -41,6 +42,10 @@ public:
     // none; the panel then says how to start).
     void setMonitorSource(model::MonitorSource *source);
     model::MonitorSource *monitorSource() const { return m_source; }
+    // What the PLC holds beside its memory, as the project or the network station running it
+    // says (its program's name, its ports' protocols: the PL110's system page 3); none: not
+    // known, and the page says so.
+    void setContext(std::optional<model::PanelContext> context);
 
     // What the panel shows now (for tests and for the keyboard's user: the display as text).
     const model::PanelView &view() const { return m_view; }
@@ -79,6 +84,7 @@ private:
     const model::Target *m_target = nullptr;
     QString m_modelName;
     QPointer<model::MonitorSource> m_source;
+    std::optional<model::PanelContext> m_context;
     model::PanelView m_view;
     model::TerminalState m_terminal; // the keys' editing, the standby (model/image/panel_keys.h)
     QElapsedTimer m_clock;

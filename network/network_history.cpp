@@ -182,6 +182,10 @@ void alignRanges(simulator::WordRanges &ranges, std::size_t n) {
     ranges = std::move(out);
 }
 
+// The words before a station's word changes in Instant::changes: its scans, its virtual ms and
+// its ports' last communication, two words each.
+constexpr std::size_t kStationHead = 6;
+
 // Calls f(index, value) for each word change of one station's part from c[p] (its length
 // first), and leaves p after it.
 template <typename C, typename F> void forEachWordChange(const C &c, std::size_t &p, F f) {
@@ -203,7 +207,7 @@ template <typename C, typename F> void forEachWordChange(const C &c, std::size_t
 
 // p from one station's part of Instant::changes to the next one's.
 template <typename C> void skipStation(const C &c, std::size_t &p) {
-    p += 4;
+    p += kStationHead;
     p += 1 + std::size_t(c[p]);
     p += 1 + std::size_t(c[p]);
 }
@@ -317,6 +321,7 @@ struct NetworkHistory::Worker {
 
 std::size_t NetworkHistory::Instant::bytes() const {
     std::size_t n = sizeof(Instant) + statistics.capacity() * sizeof(model::ScanStatistics) +
+                    communicated.capacity() * sizeof(qint64) +
                     changes.capacity() * sizeof(std::uint32_t) +
                     keys.capacity() * sizeof(std::shared_ptr<const Key>);
     for (const auto &k : keys)
@@ -376,6 +381,9 @@ void NetworkHistory::record(const Network &network, bool commands) {
         changes.push_back(static_cast<std::uint32_t>(ms));
         changes.push_back(static_cast<std::uint32_t>(ms >> 32));
         Station &station = *stations[i];
+        const auto communicated = static_cast<quint64>(station.communicatedUs());
+        changes.push_back(static_cast<std::uint32_t>(communicated));
+        changes.push_back(static_cast<std::uint32_t>(communicated >> 32));
         ImageWrites &written = station.written();
         // Forced bits change only by a command, between two slices, or a slave's force.
         if (commands || written.forces()) {
@@ -455,8 +463,10 @@ void NetworkHistory::record(const Network &network, bool commands) {
         // (a rebuild then applies at most about an image's bytes of changes to the key).
         std::size_t keyBytes = 0;
         instant.keys.reserve(stations.size());
-        for (const auto &station : stations)
+        for (const auto &station : stations) {
             instant.statistics.push_back(station->engine().statistics());
+            instant.communicated.push_back(station->communicatedUs());
+        }
         for (const Worker::Station &s : w.stations) {
             auto k = std::make_shared<Key>(m_arena.get());
             k->take(s.words);
@@ -557,6 +567,7 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
         s.forceValue[key.forces[f]] = key.forces[f + 2];
     }
     s.statistics = m_instants[k].statistics[station];
+    s.communicatedUs = m_instants[k].communicated[station];
     std::vector<std::uint8_t> flow = key.flow;
     for (std::size_t j = k + 1; j <= instant; ++j) {
         const auto &c = m_instants[j].changes;
@@ -566,8 +577,9 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
         if (j == instant) {
             s.statistics.scans = c[p] | quint64(c[p + 1]) << 32;
             s.statistics.timeMs = static_cast<qint64>(c[p + 2] | quint64(c[p + 3]) << 32);
+            s.communicatedUs = static_cast<qint64>(c[p + 4] | quint64(c[p + 5]) << 32);
         }
-        p += 4;
+        p += kStationHead;
         forEachWordChange(c, p,
                           [&](std::size_t index, std::int32_t value) { s.words[index] = value; });
         const std::size_t toggles = c[p++];
@@ -633,7 +645,7 @@ std::vector<NetworkHistory::WordValue> NetworkHistory::wordValues(std::size_t st
                 skipStation(c, p);
             now.scans = c[p] | quint64(c[p + 1]) << 32;
             now.timeMs = static_cast<qint64>(c[p + 2] | quint64(c[p + 3]) << 32);
-            p += 4;
+            p += kStationHead;
             forEachWordChange(c, p, [&](std::size_t index, std::int32_t value) {
                 if (index == word)
                     now.value = value;

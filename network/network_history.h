@@ -7,13 +7,14 @@
 // checkpoint (simulator/scan_history.h), but a station alone cannot be run again: what its
 // ports received came from the other stations, and a copy of the whole network would have to
 // copy every port's protocol state, every slave's half-read frame and the frames in flight on
-// the wires. What the views show of a station is its image, its forced bits, its statistics
-// and the power flow of its last scan, so that is what is kept: after each slice of virtual
-// time, every station's words that changed since the slice before (a few dozen in a scan of a
-// typical program), and now and then a copy of every station (a key: the blocks of its image
-// that are not all 0) from which the changes run on. Showing an instant copies the key at or
-// before it and applies the changes up to it: what is shown is what the station held then,
-// word for word, by construction.
+// the wires. What the views show of a station is its image, its forced bits, its statistics,
+// the power flow of its last scan and when its ports last carried a byte (the front panel's
+// COMM lamp), so that is what is kept: after each slice of virtual time, every station's words
+// that changed since the slice before (a few dozen in a scan of a typical program), and now
+// and then a copy of every station (a key: the blocks of its image that are not all 0) from
+// which the changes run on. Showing an instant copies the key at or before it and applies the
+// changes up to it: what is shown is what the station held then, word for word, by
+// construction.
 //
 // The window is bounded by memory: once the record passes Limits::maxBytes, the oldest key
 // and the changes that run from it go. A key is taken every Limits::keyEvery instants, when
@@ -112,8 +113,10 @@ private:
         qint64 us = 0;
         // Per station, when this instant is a key; else empty.
         std::vector<model::ScanStatistics> statistics;
+        std::vector<qint64> communicated; // Station::communicatedUs (the COMM lamp)
         std::vector<std::shared_ptr<const Key>> keys;
         // Per station, when not a key: [scans (2 words, low first), virtual ms (2 words),
+        // Station::communicatedUs (2 words: what the front panel's COMM lamp showed then),
         // length L of the word changes, L words of changes, flow changes m, index x m] (a flow
         // change toggles that instruction's result). A word change is (index, value), or, for
         // neighbours that changed, (first | kRun, count, values): a busy program's registers

@@ -3,6 +3,8 @@
 #include "network/station.h"
 #include "network/tr.h"
 
+#include <QFileInfo>
+
 #include <chrono>
 #include <utility>
 
@@ -38,6 +40,11 @@ StationSource::StationSource(NetworkSession *session, const Station &station,
     , m_programPath(programPath)
     , m_inbox([this](quint64 id, bool ok, const QString &error) { finishCommand(id, ok, error); })
     , m_history(station.engine().program().layout) {
+    std::map<QString, const model::PortApplication *> ports;
+    for (const auto &[name, port] : station.ports())
+        ports[port->config().port] = port->config().application;
+    m_panelContext =
+        model::panelContext(*m_target, m_model, QFileInfo(programPath).completeBaseName(), ports);
     setRunState(RunState::Stopped);
 }
 

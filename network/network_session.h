@@ -13,11 +13,12 @@
 // through mutexes (the stations' inboxes, the history, the traffic queue, the controls).
 
 #include "network/network.h"
-#include "network/network_session_bridges.h"
 #include "network/network_history.h"
+#include "network/network_session_bridges.h"
 
 #include "model/image/history.h"
 #include "model/image/monitor_source.h"
+#include "model/image/panel_view.h"
 #include "simulator/command_inbox.h"
 #include "simulator/engine.h"
 
@@ -46,6 +47,10 @@ public:
     const model::ModelVariant *model() const { return m_model; }
     // The file of the station's program (resolved against the network file).
     const QString &programPath() const { return m_programPath; }
+    // What the station's PLC holds beside its memory (the front panel's PL110 system page 3):
+    // its program's name (the file's, without its suffix) and each port's application as the
+    // project's and the network's settings give it.
+    const model::PanelContext &panelContext() const { return m_panelContext; }
 
     // History: the station's devices recorded after every scan it completes (MonitorSource). A
     // trigger is evaluated there: it reports triggered(), and with Trigger::Action::Stop the
@@ -67,6 +72,7 @@ private:
     const model::Target *m_target;
     const model::ModelVariant *m_model;
     QString m_programPath;
+    model::PanelContext m_panelContext;
     simulator::CommandInbox m_inbox;
     mutable std::mutex m_historyMutex;
     model::HistoryRecorder m_history;

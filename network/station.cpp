@@ -152,9 +152,15 @@ Station::~Station() = default;
 
 model::Snapshot Station::snapshot() const {
     model::Snapshot s = m_engine->snapshot();
-    for (const auto &[key, port] : m_ports)
-        s.communicatedUs = std::max(s.communicatedUs, port->communicatedUs());
+    s.communicatedUs = communicatedUs();
     return s;
+}
+
+qint64 Station::communicatedUs() const {
+    qint64 us = -1;
+    for (const auto &[key, port] : m_ports)
+        us = std::max(us, port->communicatedUs());
+    return us;
 }
 
 StationPort *Station::findPort(const QString &name) const {

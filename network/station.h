@@ -90,6 +90,9 @@ public:
     // The engine's snapshot with what its ports did (Snapshot::communicatedUs: the front
     // panel's COMM lamp).
     model::Snapshot snapshot() const;
+    // The latest StationPort::communicatedUs of its ports (-1: none has carried a byte): what
+    // the snapshot and the network's history say of its communication.
+    qint64 communicatedUs() const;
     const std::map<QString, std::unique_ptr<StationPort>> &ports() const { return m_ports; }
     StationPort *findPort(const QString &name) const;
     StationPort *addPort(model::PortConfig config);

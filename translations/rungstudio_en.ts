@@ -77,7 +77,7 @@
 <context>
     <name>rung::app::NetworkWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/network_window_session.cpp" line="+350"/>
+        <location filename="../app/gui/network_window_session.cpp" line="+351"/>
         <source>%1, %2, %n station(s)</source>
         <extracomment>%1 run state, %2 virtual time, %3 number of stations</extracomment>
         <translation>

@@ -1370,7 +1370,7 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::FrontPanelController</name>
     <message>
-        <location filename="../app/gui/front_panel_controller.cpp" line="+56"/>
+        <location filename="../app/gui/front_panel_controller.cpp" line="+65"/>
         <source>Front Panel</source>
         <translation>Előlap</translation>
     </message>
@@ -3896,7 +3896,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>PLC-hálózatok (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+72"/>
         <source>No network</source>
         <translation>Nincs hálózat</translation>
     </message>
@@ -6435,7 +6435,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+371"/>
+        <location filename="../editor/front_panel.cpp" line="+376"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (billentyű: %3; lenyomva tartva %4 = 1)</translation>
     </message>
@@ -6445,7 +6445,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: %2 (ide ír: %3)</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>This PLC has no front panel that its manual describes</source>
         <translation>Ennek a PLC-nek a kézikönyve nem ír le előlapot</translation>
     </message>
@@ -8613,7 +8613,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::PanelView</name>
     <message>
-        <location filename="../model/image/panel_view.cpp" line="+130"/>
+        <location filename="../model/image/panel_view.cpp" line="+131"/>
         <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
         <translation>%1. kijelzési mód: a kézikönyv a(z) %2. módot (egy %3 jegyű érték) és a(z) %4. módot (két %5 jegyű érték) írja le</translation>
     </message>
@@ -8623,12 +8623,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %1 által megnevezett regiszter (%2) nem létezik</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+110"/>
+        <source>Application &quot;%1&quot;; the ports&apos; protocols as their settings give them</source>
+        <translation>Alkalmazás: „%1”; a portok protokolljai a beállításaik szerint</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The application&apos;s name and the ports&apos; protocols are not known here: shown as dashes</source>
+        <translation>Az alkalmazás neve és a portok protokolljai itt nem ismertek: kötőjel jelzi őket</translation>
+    </message>
+    <message>
+        <location line="+154"/>
         <source>No page is shown: the program enables none</source>
         <translation>Nincs megjelenített oldal: a program egyet sem engedélyez</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_panel.cpp" line="+135"/>
+        <location filename="../model/target/target_pl110_panel.cpp" line="+139"/>
         <source>System info: the simulator has no BOOT or firmware version (shown as a dash); the slave address is SMW4, changed with the keys after the system password 1357</source>
         <translation>Rendszerinformáció: a szimulátornak nincs BOOT- és firmware-verziója (kötőjel jelzi); a slave címe az SMW4, a gombokkal az 1357-es rendszerjelszó megadása után módosítható</translation>
     </message>
@@ -9973,17 +9983,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>MODBUS RTU slave</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
         <source>MODBUS RTU master (COM / EXP)</source>
         <translation>MODBUS RTU master (COM / EXP)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>NAIS MATSUSHITA-MASTER (COM / EXP, no frames)</source>
         <translation>NAIS MATSUSHITA-MASTER (COM / EXP, keretek nélkül)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>COM1, the RS-485 port</source>
         <translation>COM1, az RS-485 port</translation>
     </message>
@@ -11137,7 +11147,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>világít, ha programhiba leállította a PLC-t</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_panel.cpp" line="-120"/>
+        <location filename="../model/target/target_pl110_panel.cpp" line="-124"/>
         <source>steady: the PLC is in RUN; slow blink (0.5 s on, 0.5 s off): no ladder program runs</source>
         <translation>folyamatosan világít: a PLC RUN üzemmódban van; lassan villog (0,5 s be, 0,5 s ki): nem fut létraprogram</translation>
     </message>
@@ -11667,7 +11677,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+328"/>
+        <location filename="../network/network_session.cpp" line="+335"/>
         <source>a fault made in the IDE</source>
         <translation>az IDE-ben okozott hiba</translation>
     </message>

@@ -1372,7 +1372,7 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::FrontPanelController</name>
     <message>
-        <location filename="../app/gui/front_panel_controller.cpp" line="+56"/>
+        <location filename="../app/gui/front_panel_controller.cpp" line="+65"/>
         <source>Front Panel</source>
         <translation>Pannello frontale</translation>
     </message>
@@ -3904,7 +3904,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Reti di PLC (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+72"/>
         <source>No network</source>
         <translation>Nessuna rete</translation>
     </message>
@@ -6450,7 +6450,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+371"/>
+        <location filename="../editor/front_panel.cpp" line="+376"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (tasto %3; tenuto premuto, %4 vale 1)</translation>
     </message>
@@ -6460,7 +6460,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: %2 (scrive %3)</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>This PLC has no front panel that its manual describes</source>
         <translation>Il manuale di questo PLC non descrive un pannello frontale</translation>
     </message>
@@ -8636,7 +8636,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::PanelView</name>
     <message>
-        <location filename="../model/image/panel_view.cpp" line="+130"/>
+        <location filename="../model/image/panel_view.cpp" line="+131"/>
         <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
         <translation>Modo di visualizzazione %1: il manuale descrive il modo %2 (un valore di %3 cifre) e il modo %4 (due valori di %5 cifre)</translation>
     </message>
@@ -8646,12 +8646,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il registro indicato da %1 (%2) non esiste</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+110"/>
+        <source>Application &quot;%1&quot;; the ports&apos; protocols as their settings give them</source>
+        <translation>Applicazione «%1»; i protocolli delle porte secondo le loro impostazioni</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The application&apos;s name and the ports&apos; protocols are not known here: shown as dashes</source>
+        <translation>Il nome dell&apos;applicazione e i protocolli delle porte qui non sono noti: indicati con un trattino</translation>
+    </message>
+    <message>
+        <location line="+154"/>
         <source>No page is shown: the program enables none</source>
         <translation>Nessuna pagina visualizzata: il programma non ne abilita alcuna</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_panel.cpp" line="+135"/>
+        <location filename="../model/target/target_pl110_panel.cpp" line="+139"/>
         <source>System info: the simulator has no BOOT or firmware version (shown as a dash); the slave address is SMW4, changed with the keys after the system password 1357</source>
         <translation>System info: il simulatore non ha versione del programma di BOOT né del firmware (indicate con un trattino); l&apos;indirizzo slave è SMW4, modificabile con i tasti previa immissione della password di sistema 1357</translation>
     </message>
@@ -9996,17 +10006,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Slave MODBUS RTU</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
         <source>MODBUS RTU master (COM / EXP)</source>
         <translation>Master MODBUS RTU (COM / EXP)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>NAIS MATSUSHITA-MASTER (COM / EXP, no frames)</source>
         <translation>NAIS MATSUSHITA-MASTER (COM / EXP, senza frame)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>COM1, the RS-485 port</source>
         <translation>COM1, la porta RS-485</translation>
     </message>
@@ -11160,7 +11170,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>acceso quando un errore di programma ha fermato il PLC</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_panel.cpp" line="-120"/>
+        <location filename="../model/target/target_pl110_panel.cpp" line="-124"/>
         <source>steady: the PLC is in RUN; slow blink (0.5 s on, 0.5 s off): no ladder program runs</source>
         <translation>acceso fisso: il PLC è in RUN; lampeggio lento (0,5 s on / 0,5 s off): nessun applicativo ladder in esecuzione</translation>
     </message>
@@ -11690,7 +11700,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+328"/>
+        <location filename="../network/network_session.cpp" line="+335"/>
         <source>a fault made in the IDE</source>
         <translation>un guasto creato nell&apos;IDE</translation>
     </message>

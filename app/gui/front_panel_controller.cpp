@@ -4,6 +4,7 @@
 #include "editor/front_panel.h"
 
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QMainWindow>
 #include <QStatusBar>
 
@@ -18,10 +19,12 @@ FrontPanelController::FrontPanelController(editor::Document *document, QMainWind
     m_dock->setWidget(m_panel);
     window->addDockWidget(Qt::RightDockWidgetArea, m_dock);
     m_dock->hide();
-    connect(document, &editor::Document::programChanged, this, [this] {
-        if (!m_pinned)
-            followDocument();
-    });
+    // The ports' settings are the project's (programChanged); its name is the file's.
+    for (auto signal : {&editor::Document::programChanged, &editor::Document::nameChanged})
+        connect(document, signal, this, [this] {
+            if (!m_pinned)
+                followDocument();
+        });
     connect(m_panel, &editor::FrontPanel::message, this,
             [window](const QString &text) { window->statusBar()->showMessage(text, 10000); });
     followDocument();
@@ -31,6 +34,11 @@ FrontPanelController::FrontPanelController(editor::Document *document, QMainWind
 void FrontPanelController::followDocument() {
     const model::ModelVariant *variant = m_document->modelVariant();
     m_panel->setPlc(&m_document->target(), variant ? variant->name : QString());
+    // The simulated PLC holds the document's program under the project's name (PL110 manual
+    // 5.3: "il nome dell'applicazione ladder caricata"), its ports set as the project says.
+    m_panel->setContext(model::panelContext(m_document->target(), variant,
+                                            QFileInfo(m_document->name()).completeBaseName(),
+                                            m_document->project().ports));
 }
 
 void FrontPanelController::setSimulationSource(model::MonitorSource *source) {
@@ -43,6 +51,7 @@ void FrontPanelController::showSource(model::MonitorSource *source, const model:
                                       const QString &modelName) {
     m_pinned = true;
     m_panel->setPlc(&target, modelName);
+    m_panel->setContext(std::nullopt); // another PLC's: what it holds is not the document's
     m_panel->setMonitorSource(source);
 }
 

@@ -286,6 +286,7 @@ bool NetworkWindow::selectStation(const QString &name) {
             network::StationSource *source = m_views[i].source;
             m_session->setPowerFlowStation(name);
             m_panel->setPlc(&source->target(), source->model() ? source->model()->name : QString());
+            m_panel->setContext(source->panelContext());
             m_panel->setMonitorSource(m_history->shownSource(source));
             m_debug->selectStation(name);
             const QSignalBlocker selector(m_selector), list(m_stationList);

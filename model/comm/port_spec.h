@@ -65,6 +65,9 @@ struct PortApplication {
     // CPU Link (by range mode 1..3) and Parallel Link (low, high speed): what is exchanged.
     std::vector<SharedMode> sharedModes;
     int sharedLink = 0; // 1: CPU Link (stations 0..7), 2: Parallel Link (a master, a slave)
+    // The words the PLC's own display writes it with (PL110 system page 3: "MODBUS SLAVE"),
+    // not translated; null: `name` untranslated.
+    const char *displayName = nullptr;
 };
 
 // The special markers and byte areas through which a PL110 program drives a port (PL110

@@ -1,5 +1,6 @@
 #include "model/image/panel_view.h"
 
+#include "model/comm/port_config.h"
 #include "model/image/bcd.h"
 #include "model/target/address.h"
 
@@ -213,6 +214,55 @@ void systemFieldsView(const Target &target, const PanelDisplay &d, const PanelIn
     }
 }
 
+// A row of the display: `left` from column 1 and `right` ending at the last column, cut at the
+// row's end as the display cuts what does not fit (a space between them at least).
+QString displayRow(const QString &left, const QString &right, int columns) {
+    const int gap = std::max<int>(right.isEmpty() ? 0 : 1,
+                                  columns - static_cast<int>(left.size() + right.size()));
+    return (left + QString(gap, QLatin1Char(' ')) + right).left(columns);
+}
+
+// What the PLC holds beside its memory (PanelDisplay::contextPage: PL110 manual 5.3, page 3,
+// "il nome dell'applicazione ladder caricata, i protocolli associati alle porte seriali"): the
+// program's name and each port's application as the context says, or, without one, a dash
+// where each would stand, the note saying why.
+void contextView(const Target &target, const ModelVariant &model, const PanelDisplay &d,
+                 const PanelInput &in, PanelView &v) {
+    const QString dash(QChar(0x2014));
+    const auto put = [&](int row, const QString &text) {
+        if (row >= 1 && row <= v.lines.size())
+            v.lines[row - 1] = text.leftJustified(d.columns, QLatin1Char(' '));
+    };
+    const PanelContext *c = in.context;
+    if (d.applicationRow > 0)
+        put(d.applicationRow, c && !c->application.isEmpty()
+                                  ? c->application.left(d.columns)
+                                  : displayRow(QString(), dash, d.columns));
+    int row = d.portsRow;
+    for (const PortSpec &spec : target.ports) {
+        if (row <= 0 || !spec.on(model.name))
+            continue;
+        QString words = dash;
+        if (c)
+            for (const PanelPort &p : c->ports)
+                if (p.port == spec.name && p.application)
+                    words =
+                        QString::fromLatin1(p.application->displayName ? p.application->displayName
+                                                                       : p.application->name);
+        put(row++, displayRow(spec.name, words, d.columns));
+    }
+    const QString note =
+        c ? QCoreApplication::translate("rung::model::PanelView",
+                                        "Application \"%1\"; the ports' protocols as their "
+                                        "settings give them")
+                .arg(c->application)
+          : QCoreApplication::translate(
+                "rung::model::PanelView",
+                "The application's name and the ports' protocols are not known here: shown as "
+                "dashes");
+    v.note = v.note.isEmpty() ? note : v.note + QLatin1Char('\n') + note;
+}
+
 // The system pages (PL110 manual 5.3). Pages 1 and 2: the digital inputs and outputs, "attive ...
 // con un quadratino pieno", and the analog inputs' values, from the model's terminal strip.
 void systemPage(const Target &target, const ModelVariant *model, const PanelInput &in, int page,
@@ -259,6 +309,8 @@ void systemPage(const Target &target, const ModelVariant *model, const PanelInpu
         if (text.note)
             v.note = QCoreApplication::translate("rung::model::PanelView", text.note);
     }
+    if (page == d.contextPage)
+        contextView(target, m, d, in, v);
     systemFieldsView(target, d, in, page, v);
 }
 
@@ -409,6 +461,42 @@ void pointLampsView(const Target &target, const ModelVariant *model, const Front
 }
 
 } // namespace
+
+PanelContext panelContext(const Target &target, const ModelVariant *model, QString application,
+                          const std::map<QString, const PortApplication *> &chosen) {
+    PanelContext c;
+    c.application = std::move(application);
+    const ModelVariant &m = model ? *model : target.defaultModel();
+    for (const PortSpec &spec : target.ports) {
+        if (!spec.on(m.name))
+            continue;
+        PanelPort p{spec.name, nullptr};
+        // A port the settings do not name: its first application, as readPortConfig gives it.
+        if (const auto it = chosen.find(spec.name); it != chosen.end())
+            p.application = it->second;
+        else if (!spec.applications.empty())
+            p.application = &spec.applications.front();
+        c.ports.push_back(p);
+    }
+    return c;
+}
+
+PanelContext panelContext(const Target &target, const ModelVariant *model, QString application,
+                          const QJsonObject &ports) {
+    std::map<QString, const PortApplication *> chosen;
+    for (auto it = ports.begin(); it != ports.end(); ++it) {
+        PortConfig config;
+        QString why;
+        if (readPortConfig(target, model, it.key(), {{it.value().toObject(), it.key()}}, &config,
+                           &why))
+            chosen[config.port] = config.application;
+        else
+            for (const PortSpec &spec : target.ports)
+                if (spec.name.compare(it.key(), Qt::CaseInsensitive) == 0)
+                    chosen[spec.name] = nullptr;
+    }
+    return panelContext(target, model, std::move(application), chosen);
+}
 
 bool hasFrontPanel(const Target &target, const ModelVariant *model) {
     const FrontPanel &p = target.panel;

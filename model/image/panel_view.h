@@ -11,8 +11,10 @@
 #include "model/target/front_panel.h"
 #include "model/target/target.h"
 
+#include <QJsonObject>
 #include <QString>
 #include <QStringList>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -83,6 +85,32 @@ struct PanelView {
     std::vector<Address> devices;
 };
 
+// A port of the PLC and the application its settings give it (the project's "ports", a network
+// station's over them; the table's first application where they name none).
+struct PanelPort {
+    QString port;                                 // PortSpec::name ("COM1")
+    const PortApplication *application = nullptr; // null: the settings do not read
+};
+
+// What the PLC holds beside its memory that a page shows (PL110 manual 5.3, page 3: "il nome
+// dell'applicazione ladder caricata, i protocolli associati alle porte seriali"): the name of
+// the program loaded and each port's application, as the project or the network station that
+// runs the simulated PLC says.
+struct PanelContext {
+    QString application;          // the ladder application's name ("pump", the project's file)
+    std::vector<PanelPort> ports; // every port of the model, in the table's order
+};
+
+// The context of a PLC running `application` whose ports are set as `chosen` says (PortSpec::
+// name -> application; a port it does not name runs its first application, as readPortConfig
+// gives it).
+PanelContext panelContext(const Target &target, const ModelVariant *model, QString application,
+                          const std::map<QString, const PortApplication *> &chosen);
+// The same from a project's "ports" object (model::Project::ports): a port whose settings do not
+// read has no application (shown as not known).
+PanelContext panelContext(const Target &target, const ModelVariant *model, QString application,
+                          const QJsonObject &ports);
+
 struct PanelInput {
     const Snapshot *snapshot = nullptr; // null: nothing runs
     MonitorSource::RunState runState = MonitorSource::RunState::Offline;
@@ -90,6 +118,9 @@ struct PanelInput {
     qint64 nowMs = 0;   // wall-clock ms for the blinking lamps
     // The terminal's keys (a field being edited, the password page, the standby); null: none.
     const TerminalState *terminal = nullptr;
+    // The program's name and the ports' protocols (PL110 system page 3); null: not known (the
+    // page shows dashes there and its note says so).
+    const PanelContext *context = nullptr;
 };
 
 // True when the target (on this model, null: the default) has a panel to show.

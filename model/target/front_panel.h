@@ -176,6 +176,15 @@ struct PanelDisplay {
     // numbers (PanelSystemField).
     std::vector<PanelSystemPage> systemTexts;
     std::vector<PanelSystemField> systemFields;
+    // Text: the system page that shows what the PLC holds beside its memory
+    // (model::PanelContext: PL110 manual 5.3, page 3), 0 none; the row (1-based) of the ladder
+    // application's name, from column 1, cut at the row's end; the first row of the ports, one
+    // a row in the table's order, the port's name at the left and its application at the right
+    // (PortApplication::displayName), cut at the row's end. What is not known: a dash at the
+    // row's end.
+    int contextPage = 0;
+    int applicationRow = 0;
+    int portsRow = 0;
     // IoLines: the areas shown, in order, and how many to a line.
     std::vector<QString> lineAreas;
     int perLine = 16;

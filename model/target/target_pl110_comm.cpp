@@ -36,6 +36,10 @@ std::vector<PortSpec> pl110Ports() {
     PortApplication slave;
     slave.id = "modbus";
     slave.name = QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS RTU slave");
+    // On the display's system page 3 (5.3: "i protocolli associati alle porte seriali"), whose
+    // words the manual does not give: the protocol and the port's part in it, in the display's
+    // capitals, within a 21-column row beside the port's name (target_pl110_panel.cpp).
+    slave.displayName = "MODBUS SLAVE";
     slave.bauds = bauds;
     slave.frame = "8N1";
     slave.stationMin = 1;
@@ -47,6 +51,7 @@ std::vector<PortSpec> pl110Ports() {
     master.name = QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS RTU master (COM / EXP)");
     master.answers.reset();
     master.master = true;
+    master.displayName = "MODBUS MASTER";
     // 4.2.21: "generalmente" RS-232 at 9600,8,O,1; the frames are not in the manual.
     PortApplication nais = master;
     nais.id = "nais-master";
@@ -54,6 +59,7 @@ std::vector<PortSpec> pl110Ports() {
         QT_TRANSLATE_NOOP("rung::model::Target", "NAIS MATSUSHITA-MASTER (COM / EXP, no frames)");
     nais.bauds = {9600, 110, 150, 300, 600, 1200, 2400, 4800, 19200, 28800, 38400, 57600};
     nais.frame = "8O1";
+    nais.displayName = "NAIS MASTER";
     nais.published = false;
     auto markers = [&](const char *status, const char *timeout, const char *gap, const char *limit,
                        const char *timeouts, const char *errors, const char *freePort,

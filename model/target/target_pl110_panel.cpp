@@ -120,18 +120,22 @@ void addPl110Panel(Target &t) {
     // SM109); the number is SMW4 (1.6.4: "INDIRIZZO MODULO = OFFSET INDIRIZZO (SMW4)", the
     // PL110-2A has no rotary switch), within the station numbers of the ports' MODBUS slave
     // (target_pl110_comm.cpp). The simulator has no BOOT or firmware version: a dash, no
-    // number. The application's name and the ports' protocols are not among what the panel is
-    // given (a snapshot of the PLC's memory): left out. Page 4, "data ed ora dell'orologio
+    // number. The application's name and the ports' protocols are what the project or the
+    // network station running the PLC says (model::PanelContext): the name on row 4 (the rows 2 and
+    // 3 the versions'), cut at the row's end as the display would cut it (the whole name in the
+    // page's note), then COM1, EXP1, COM2 a row each with the application its settings give it
+    // (PortApplication::displayName, target_pl110_comm.cpp); the slave address below them.
+    // Where nothing says them (no context), a dash. Page 4, "data ed ora dell'orologio
     // interno", SM9..SM15 (2.1.2) in their ranges. Page 5 as the manual's figure draws it
     // ("*** DISPLAY SETUP ***", "STANDBY BRIGHTNESS", "OFF %", "STANDBY DELAY", "2 min"):
     // SM100 in % ("default 0=OFF"), SM101 in minutes, every value of its word. The layout of
     // pages 3 and 4 is not in the manual: the values plainly, one to a row *(choice)*.
     d.systemTexts = {
         {3,
-         {QStringLiteral("SYSTEM INFO"), QString(),
+         {QStringLiteral("SYSTEM INFO"),
           QStringLiteral("BOOT") + QString(16, QLatin1Char(' ')) + QChar(0x2014),
           QStringLiteral("FIRMWARE") + QString(12, QLatin1Char(' ')) + QChar(0x2014), QString(),
-          QStringLiteral("SLAVE ADDRESS:")},
+          QString(), QString(), QString(), QStringLiteral("SLAVE ADDRESS:")},
          QT_TRANSLATE_NOOP("rung::model::PanelView",
                            "System info: the simulator has no BOOT or firmware version (shown "
                            "as a dash); the slave address is SMW4, changed with the keys after "
@@ -149,6 +153,9 @@ void addPl110Panel(Target &t) {
           QStringLiteral("                  min")},
          nullptr},
     };
+    d.contextPage = 3;
+    d.applicationRow = 4;
+    d.portsRow = 5;
     const auto number = [](int page, const char *device, int row, int column, int digits,
                            int lowest, int highest, int password = 0) {
         PanelSystemField f;
@@ -164,7 +171,7 @@ void addPl110Panel(Target &t) {
         return f;
     };
     d.systemFields = {
-        number(3, "SM4", 6, 19, 3, 1, 255, 1357),
+        number(3, "SM4", 8, 19, 3, 1, 255, 1357),
         // DD/MM/YY, hh:mm:ss, the day of the week 0 (Sunday) .. 6.
         number(4, "SM12", 3, 14, 2, 1, 31),
         number(4, "SM13", 3, 17, 2, 1, 12),

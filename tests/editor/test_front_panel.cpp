@@ -12,6 +12,7 @@
 #include <QDockWidget>
 
 #include <QDial>
+#include <QJsonObject>
 #include <QLabel>
 #include <QSpinBox>
 #include <QTest>
@@ -398,7 +399,7 @@ TEST(FrontPanelView, Pl110SlaveAddressIsRefusedWithoutTheSystemPasswordAndSetWit
     f.scan();
     f.scan();
     ASSERT_EQ(f.panel.view().page, 3);
-    EXPECT_EQ(f.panel.display()->text().split(QLatin1Char('\n')).value(5),
+    EXPECT_EQ(f.panel.display()->text().split(QLatin1Char('\n')).value(7),
               QStringLiteral("SLAVE ADDRESS:      7"));
     // The caption: the page's number, and below it what the page's values are.
     const auto *caption = f.panel.findChild<QLabel *>(QStringLiteral("frontPanelCaption"));
@@ -438,6 +439,45 @@ TEST(FrontPanelView, Pl110SlaveAddressIsRefusedWithoutTheSystemPasswordAndSetWit
     f.settle();
     f.scan();
     EXPECT_EQ(f.value("SM4"), 8);
-    EXPECT_EQ(f.panel.display()->text().split(QLatin1Char('\n')).value(5),
+    EXPECT_EQ(f.panel.display()->text().split(QLatin1Char('\n')).value(7),
               QStringLiteral("SLAVE ADDRESS:      8"));
+}
+
+// PL110 manual 5.3, page 3: "il nome dell'applicazione ladder caricata, i protocolli associati
+// alle porte seriali": the IDE's Front Panel shows the project's name and the protocol its port
+// settings give each port (Tools > Communication Ports: EXP1 a MODBUS master), and follows them
+// when they change.
+TEST_F(FrontPanelDock, Pl110SystemInfoShowsTheProjectsNameAndItsPortsProtocols) {
+    FrontPanelDock &f = *this;
+    f.window.newProject(rung::testing::pl110(), QStringLiteral("PL110-2A"));
+    f.load("LD SM0.1\nMOV 3 SM104\nEND\n");
+    f.window.document()->setPath(QStringLiteral("/plant/pump_station.rung"));
+    QJsonObject exp1;
+    exp1.insert(QStringLiteral("application"), QStringLiteral("modbus-master"));
+    QJsonObject ports;
+    ports.insert(QStringLiteral("EXP1"), exp1);
+    f.window.document()->setPorts(ports, QStringLiteral("ports"));
+    editor::FrontPanel *panel = f.window.frontPanel()->panel();
+    f.window.show();
+    QApplication::setActiveWindow(&f.window);
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&f.window));
+    f.view->setFocus();
+    QTest::keyClick(f.view, Qt::Key_F10);
+    ASSERT_NE(f.window.simulation()->session(), nullptr);
+    ASSERT_TRUE(eventually([&] { return panel->view().page == 3; }));
+    const auto row = [&](int k) {
+        return panel->display()->text().split(QLatin1Char('\n')).value(k);
+    };
+    EXPECT_EQ(row(3), QStringLiteral("pump_station         "));
+    EXPECT_EQ(row(4), QStringLiteral("COM1     MODBUS SLAVE"));
+    EXPECT_EQ(row(5), QStringLiteral("EXP1    MODBUS MASTER"));
+    const auto *caption = panel->findChild<QLabel *>(QStringLiteral("frontPanelCaption"));
+    ASSERT_NE(caption, nullptr);
+    EXPECT_TRUE(caption->text().contains(QStringLiteral("\"pump_station\"")))
+        << caption->text().toStdString();
+    // The settings changed: the page follows.
+    ports.remove(QStringLiteral("EXP1"));
+    f.window.document()->setPorts(ports, QStringLiteral("ports"));
+    EXPECT_TRUE(eventually([&] { return row(5) == QStringLiteral("EXP1     MODBUS SLAVE"); }))
+        << row(5).toStdString();
 }

@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <QJsonObject>
+
 #include <algorithm>
+#include <map>
 
 using namespace rung;
 using rung::model::MonitorSource;
@@ -244,14 +247,98 @@ TEST(FrontPanel, Pl110SystemInfoShowsTheSlaveAddressAndNoInventedVersion) {
     const model::PanelView v = image.view(MonitorSource::RunState::Running, "PL110-2A");
     ASSERT_EQ(v.lines.size(), 8);
     EXPECT_EQ(v.lines[0].trimmed(), QStringLiteral("SYSTEM INFO"));
-    EXPECT_EQ(v.lines[2], QStringLiteral("BOOT                \u2014"));
-    EXPECT_EQ(v.lines[3], QStringLiteral("FIRMWARE            \u2014"));
-    EXPECT_EQ(v.lines[5], QStringLiteral("SLAVE ADDRESS:     17"));
+    EXPECT_EQ(v.lines[1], QStringLiteral("BOOT                \u2014"));
+    EXPECT_EQ(v.lines[2], QStringLiteral("FIRMWARE            \u2014"));
+    EXPECT_EQ(v.lines[7], QStringLiteral("SLAVE ADDRESS:     17"));
+    ASSERT_EQ(v.fields.size(), 1u);
+    EXPECT_EQ(v.fields[0].row, 7);
+    EXPECT_EQ(v.fields[0].column, 18);
     ASSERT_EQ(v.fields.size(), 1u);
     EXPECT_TRUE(v.fields[0].editable);
     EXPECT_FALSE(v.fields[0].editing);
     EXPECT_NE(std::find(v.devices.begin(), v.devices.end(), image.at("SM4")), v.devices.end());
     EXPECT_TRUE(v.note.contains(QStringLiteral("1357"))) << v.note.toStdString();
+}
+
+// 5.3, page 3: "il nome dell'applicazione ladder caricata, i protocolli associati alle porte
+// seriali": the project's name on row 4 and each port's protocol as its settings give it (the
+// project's "ports": EXP1 a MODBUS master, COM1 and COM2 unnamed, their first application).
+TEST(FrontPanel, Pl110SystemInfoShowsTheApplicationAndThePortsProtocols) {
+    const model::Target &t = rung::testing::pl110();
+    PanelImage image(t);
+    image.set("SM105", 3);
+    image.set("SM4", 1);
+    const model::ModelVariant *m = t.model(QStringLiteral("PL110-2A"));
+    QJsonObject exp1;
+    exp1.insert(QStringLiteral("application"), QStringLiteral("modbus-master"));
+    QJsonObject ports;
+    ports.insert(QStringLiteral("EXP1"), exp1);
+    const model::PanelContext context = model::panelContext(t, m, QStringLiteral("pump"), ports);
+    model::PanelInput in{&image.snapshot, MonitorSource::RunState::Running};
+    in.context = &context;
+    const model::PanelView v = model::panelView(t, m, in);
+    ASSERT_EQ(v.lines.size(), 8);
+    EXPECT_EQ(v.lines[0], QStringLiteral("SYSTEM INFO          "));
+    EXPECT_EQ(v.lines[1], QStringLiteral("BOOT                \u2014"));
+    EXPECT_EQ(v.lines[2], QStringLiteral("FIRMWARE            \u2014"));
+    EXPECT_EQ(v.lines[3], QStringLiteral("pump                 "));
+    EXPECT_EQ(v.lines[4], QStringLiteral("COM1     MODBUS SLAVE"));
+    EXPECT_EQ(v.lines[5], QStringLiteral("EXP1    MODBUS MASTER"));
+    EXPECT_EQ(v.lines[6], QStringLiteral("COM2     MODBUS SLAVE"));
+    EXPECT_EQ(v.lines[7], QStringLiteral("SLAVE ADDRESS:      1"));
+    EXPECT_TRUE(v.note.contains(QStringLiteral("\"pump\""))) << v.note.toStdString();
+}
+
+// A name longer than the display's 21 columns is cut at the row's end, as the display would;
+// the page's note gives it whole. The NAIS master's row.
+TEST(FrontPanel, Pl110SystemInfoCutsALongNameAtTheRowsEnd) {
+    const model::Target &t = rung::testing::pl110();
+    PanelImage image(t);
+    image.set("SM105", 3);
+    const model::ModelVariant *m = t.model(QStringLiteral("PL110-2A"));
+    const QString name = QStringLiteral("water_treatment_plant_line_2");
+    std::map<QString, const model::PortApplication *> chosen;
+    chosen[QStringLiteral("COM1")] = t.port(QStringLiteral("COM1"))->application(u"nais-master");
+    const model::PanelContext context = model::panelContext(t, m, name, chosen);
+    model::PanelInput in{&image.snapshot, MonitorSource::RunState::Running};
+    in.context = &context;
+    const model::PanelView v = model::panelView(t, m, in);
+    EXPECT_EQ(v.lines[3], QStringLiteral("water_treatment_plant"));
+    EXPECT_EQ(v.lines[4], QStringLiteral("COM1      NAIS MASTER"));
+    EXPECT_EQ(v.lines[5], QStringLiteral("EXP1     MODBUS SLAVE"));
+    EXPECT_TRUE(v.note.contains(name)) << v.note.toStdString();
+}
+
+// Without a context (nothing says which program the PLC holds nor how its ports are set) the
+// page shows a dash where each would stand, and its note says so.
+TEST(FrontPanel, Pl110SystemInfoWithoutContextSaysWhatItDoesNotKnow) {
+    PanelImage image(rung::testing::pl110());
+    image.set("SM105", 3);
+    const model::PanelView v = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    EXPECT_EQ(v.lines[3], QStringLiteral("                    \u2014"));
+    EXPECT_EQ(v.lines[4], QStringLiteral("COM1                \u2014"));
+    EXPECT_EQ(v.lines[5], QStringLiteral("EXP1                \u2014"));
+    EXPECT_EQ(v.lines[6], QStringLiteral("COM2                \u2014"));
+    EXPECT_TRUE(v.note.contains(QStringLiteral("not known"))) << v.note.toStdString();
+}
+
+// Settings that do not read (an application the port does not have): that port's protocol is
+// not known, the others are.
+TEST(FrontPanel, Pl110SystemInfoPortWhoseSettingsDoNotReadIsNotKnown) {
+    const model::Target &t = rung::testing::pl110();
+    PanelImage image(t);
+    image.set("SM105", 3);
+    const model::ModelVariant *m = t.model(QStringLiteral("PL110-2A"));
+    QJsonObject com2;
+    com2.insert(QStringLiteral("application"), QStringLiteral("modbus-master"));
+    QJsonObject ports;
+    ports.insert(QStringLiteral("COM2"), com2);
+    const model::PanelContext context = model::panelContext(t, m, QStringLiteral("p"), ports);
+    model::PanelInput in{&image.snapshot, MonitorSource::RunState::Running};
+    in.context = &context;
+    const model::PanelView v = model::panelView(t, m, in);
+    EXPECT_EQ(v.lines[4], QStringLiteral("COM1     MODBUS SLAVE"));
+    EXPECT_EQ(v.lines[6], QStringLiteral("COM2                \u2014"));
 }
 
 // 5.3, page 4: "data ed ora dell'orologio interno", SM9..SM15 (2.1.2), which the simulator keeps
@@ -697,7 +784,7 @@ TEST(FrontPanelKeys, Pl110SlaveAddressOnlyAfterTheSystemPassword) {
     t.press(Role::Up);
     t.press(Role::Up);
     model::PanelView v = t.view();
-    EXPECT_EQ(v.lines[5], QStringLiteral("SLAVE ADDRESS:      3"));
+    EXPECT_EQ(v.lines[7], QStringLiteral("SLAVE ADDRESS:      3"));
     ASSERT_EQ(v.fields.size(), 1u);
     EXPECT_TRUE(v.fields[0].editing);
     const auto writes = t.press(Role::Set);

@@ -7,6 +7,7 @@
 
 #include "network/check.h"
 #include "network/devices.h"
+#include "network/network_history.h"
 
 #include "model/image/panel_view.h"
 
@@ -29,16 +30,21 @@ NetRun hostAndCpm1() {
                       {{QStringLiteral("c.il"), QString::fromLatin1(kCpm1)}});
 }
 
-// The station's COMM lamp for its snapshot now, as the IDE's front panel draws it.
-bool commLit(const Station &plc) {
-    const model::Snapshot snapshot = plc.snapshot();
-    const model::PanelView v = model::panelView(
-        plc.target(), plc.model(), {&snapshot, model::MonitorSource::RunState::Running, false, 0});
+// The station's COMM lamp for a snapshot of it, as the IDE's front panel draws it.
+bool commLit(const Station &plc, const model::Snapshot &snapshot,
+             model::MonitorSource::RunState state = model::MonitorSource::RunState::Running) {
+    const model::PanelView v =
+        model::panelView(plc.target(), plc.model(), {&snapshot, state, false, 0});
     for (const model::PanelLampView &l : v.lamps)
         if (l.label == QLatin1String("COMM"))
             return l.lit;
     ADD_FAILURE() << "no COMM lamp";
     return false;
+}
+
+// ... for its snapshot now.
+bool commLit(const Station &plc) {
+    return commLit(plc, plc.snapshot());
 }
 
 } // namespace
@@ -111,4 +117,50 @@ TEST(Cpm1PeripheralPort, AUnitOutsideTheTableIsRefusedWithWhere) {
     EXPECT_FALSE(r.net);
     EXPECT_TRUE(r.error.contains(QStringLiteral("stations[0].ports.PERIPHERAL.station")))
         << r.error.toStdString();
+}
+
+// The network's history (network_history.h) keeps what the COMM lamp showed: moving the chart's
+// cursor to an earlier instant shows the lamp as it was then (the network paused), lit while
+// the request and its reply were on the port and within the 0.2 s after, dark before and after;
+// across keys and the changes between them.
+TEST(Cpm1PeripheralPort, TheHistoryShowsTheCommLampAsItWasAtEachInstant) {
+    NetRun r = hostAndCpm1();
+    ASSERT_TRUE(r.net) << r.error.toStdString();
+    Station &plc = *r.net->station(QStringLiteral("plc"));
+    auto *host = dynamic_cast<LineDevice *>(r.net->endpoint(QStringLiteral("host")));
+    ASSERT_NE(host, nullptr);
+    NetworkHistory history(NetworkHistory::Limits{64u << 20, 5});
+    history.start(*r.net);
+    std::vector<std::pair<qint64, bool>> live; // (instant, lit then)
+    std::vector<qint64> communicated;
+    for (qint64 us = 10000; us <= 400000; us += 10000) {
+        // Between two keys (one each 6 instants here): the lamp's change read from the changes.
+        if (us == 140000)
+            r.net->inject(host, "@00RD0000000157*\r");
+        ASSERT_TRUE(r.net->runUntil(us));
+        history.record(*r.net, false);
+        live.emplace_back(us, commLit(plc));
+        communicated.push_back(plc.snapshot().communicatedUs);
+    }
+    // Keys and the changes between them both read.
+    EXPECT_GT(history.window().keys, 1u);
+    EXPECT_LT(history.window().keys, history.window().instants / 2);
+    int lit = 0;
+    for (std::size_t k = 0; k < live.size(); ++k) {
+        const auto &[us, wasLit] = live[k];
+        const std::optional<model::Snapshot> past = history.stationAt(0, us);
+        ASSERT_TRUE(past) << us;
+        EXPECT_EQ(past->communicatedUs, communicated[k]) << "at " << us << " us";
+        EXPECT_EQ(commLit(plc, *past, model::MonitorSource::RunState::Paused), wasLit)
+            << "at " << us << " us";
+        lit += wasLit ? 1 : 0;
+    }
+    // The request arrives at 149.5 ms, is answered at the 150 ms scan, the reply's last
+    // character leaves at 167.2 ms.
+    const auto litAt = [&](qint64 us) { return live[std::size_t(us / 10000 - 1)].second; };
+    EXPECT_FALSE(litAt(140000)) << "nothing on the port yet";
+    EXPECT_TRUE(litAt(150000)) << "the request came";
+    EXPECT_TRUE(litAt(360000)) << "within 0.2 s of the reply";
+    EXPECT_FALSE(litAt(370000)) << "0.2 s after";
+    EXPECT_EQ(lit, 22);
 }

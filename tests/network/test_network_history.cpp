@@ -66,16 +66,18 @@ struct SeenThen {
     std::vector<bool> flow;
     quint64 scans = 0;
     qint64 timeMs = 0;
+    qint64 communicatedUs = -1; // the front panel's COMM lamp
     friend bool operator==(const SeenThen &, const SeenThen &) = default;
 };
 
 SeenThen seenThen(const model::Snapshot &s) {
-    return {s.words,     s.forceMask,        s.forceValue,
-            s.powerFlow, s.statistics.scans, s.statistics.timeMs};
+    return {s.words,         s.forceMask,        s.forceValue,
+            s.powerFlow,     s.statistics.scans, s.statistics.timeMs,
+            s.communicatedUs};
 }
 
 SeenThen seenThen(const Station &s) {
-    return seenThen(s.engine().snapshot());
+    return seenThen(s.snapshot());
 }
 
 struct LiveInstant {

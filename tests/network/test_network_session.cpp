@@ -77,6 +77,25 @@ TEST(NetworkSession, EveryStationIsASourceStoppedAtTimeZero) {
     EXPECT_TRUE(f.station("master")->snapshot());
 }
 
+// What a station's front panel shows beside its memory (PL110 manual 5.3, page 3: "il nome
+// dell'applicazione ladder caricata, i protocolli associati alle porte seriali"): the station's
+// program file's name and each port's application as the network's settings give it (the
+// example's EXP1 a MODBUS master; COM1 and COM2, not named, their first application).
+TEST(NetworkSession, AStationsPanelContextIsItsProgramsNameAndItsPortsApplications) {
+    SessionFixture f(
+        QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/pl110-exp/pl110-exp.rungnet"));
+    ASSERT_TRUE(f.session);
+    const model::PanelContext &c = f.station("pl")->panelContext();
+    EXPECT_EQ(c.application, QStringLiteral("master"));
+    std::map<QString, QString> ports;
+    for (const model::PanelPort &p : c.ports)
+        ports[p.port] = p.application ? QString::fromLatin1(p.application->id) : QString();
+    EXPECT_EQ(ports,
+              (std::map<QString, QString>{{QStringLiteral("COM1"), QStringLiteral("modbus")},
+                                          {QStringLiteral("EXP1"), QStringLiteral("modbus-master")},
+                                          {QStringLiteral("COM2"), QStringLiteral("modbus")}}));
+}
+
 // The Easy Link example's set 1 reads D10..D19 of station 5 into the master's D0..D9.
 TEST(NetworkSession, AValueWrittenInOneStationArrivesInAnother) {
     SessionFixture f;
