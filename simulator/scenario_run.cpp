@@ -615,16 +615,19 @@ ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
         for (const model::TerminalWrite &w : action.words)
             engine.writeWord(w.device, w.value);
     };
-    auto scan = [&] {
-        const qint64 now = static_cast<qint64>(done) * period;
+    // The keys held until `ms` or before come up (in the order they were pressed).
+    auto releaseUntil = [&](qint64 ms) {
         for (auto k = held.begin(); k != held.end();) {
-            if (k->untilMs > now) {
+            if (k->untilMs > ms) {
                 ++k;
                 continue;
             }
             pressKey(*k->press, false, k->untilMs);
             k = held.erase(k);
         }
+    };
+    auto scan = [&] {
+        releaseUntil(static_cast<qint64>(done) * period);
         subject.step();
         ++done;
         for (std::size_t k = 0; k < always.size(); ++k) {
@@ -705,6 +708,7 @@ ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
             for (const Value &d : st.devices)
                 d.engine->release(d.address);
             if (statement.kind == K::Press) {
+                releaseUntil(t); // a key held until t is up before the next goes down at t
                 pressKey(st, true, t);
                 held.push_back({&st, t + st.holdMs});
             }

@@ -1037,6 +1037,11 @@ PLC after serve restarts</source>
     </message>
     <message>
         <location line="+2"/>
+        <source>Setpoints on the display, set with the keys</source>
+        <translation>Alapjelek a kijelzőn, a gombokkal beállítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Extending a counter&apos;s range</source>
         <translation>Számlálási tartomány bővítése</translation>
     </message>
@@ -12713,12 +12718,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>az at %1 korábbi, mint a(z) %2. sor %3 ideje: az utasítások időrendben követik egymást</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+158"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so it applied then, not at %3</source>
         <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért akkor hajtódott végre, nem %3-kor</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért az at %3 nem volt ellenőrizhető</translation>
     </message>
@@ -12741,12 +12746,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1-kor: mindig elvárt %2, tapasztalt %3 (%5 ciklusból %4-ban nem teljesült)</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-296"/>
         <source>runtime error at step %1: %2</source>
         <translation>futásidejű hiba a(z) %1. lépésnél: %2</translation>
     </message>
     <message>
-        <location line="+324"/>
+        <location line="+328"/>
         <source>a network&apos;s stations bring their own targets and models: --target and --model are for one program</source>
         <translation>a hálózat állomásai saját céleszközt és modellt hoznak: a --target és a --model egyetlen programhoz való</translation>
     </message>

@@ -1039,6 +1039,11 @@ PLC dopo il riavvio di serve</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>Setpoints on the display, set with the keys</source>
+        <translation>Setpoint sul display, impostati con i tasti</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Extending a counter&apos;s range</source>
         <translation>Estensione del campo di un contatore</translation>
     </message>
@@ -12738,12 +12743,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>at %1 viene prima di %3 della riga %2: le istruzioni seguono l&apos;ordine dei loro tempi</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+158"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so it applied then, not at %3</source>
         <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi è stata applicata allora, non a %3</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi at %3 non si è potuto verificare</translation>
     </message>
@@ -12766,12 +12771,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>a %1: atteso sempre %2, visto %3 (non soddisfatto in %4 di %5 scansioni)</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-296"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
     <message>
-        <location line="+324"/>
+        <location line="+328"/>
         <source>a network&apos;s stations bring their own targets and models: --target and --model are for one program</source>
         <translation>le stazioni di una rete portano i propri target e modelli: --target e --model valgono per un solo programma</translation>
     </message>

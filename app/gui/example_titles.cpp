@@ -24,6 +24,8 @@ constexpr ExampleTitle kTitles[] = {
     {"parts-counter",
      QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Parts counter and reject tracking")},
     {"stairway-light", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Stairway light")},
+    {"setpoint-page",
+     QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Setpoints on the display, set with the keys")},
     {"counting-range-extension",
      QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Extending a counter's range")},
     {"delay-off", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Off delay")},

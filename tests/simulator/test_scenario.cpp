@@ -241,6 +241,23 @@ TEST(Scenario, PressHoldsAFrontPanelKeyAndTheTerminalEditsAsOnThePlc) {
     EXPECT_TRUE(shortHold.passed()) << why(shortHold);
 }
 
+// Taps one after another (100 ms each, the next at the instant the last ends): each key is up
+// before the next goes down, so SET starts editing the field SetPAR made editable (PL110
+// manual 4.2.26, page 18 of 5.4), UP raises it, SET stores it.
+TEST(Scenario, BackToBackTapsAreEachAPress) {
+    const ScenarioResult r = run(QStringLiteral("program page.il\n"
+                                                "at 0s expect SM105=18\n"
+                                                "at 100ms press SET\n"
+                                                "at 200ms press UP\n"
+                                                "at 300ms press SET\n"
+                                                "at 400ms expect VW0=1\n"),
+                                 QStringLiteral("LD SM0.1\nMOV 2 SM103\nLD SM0.1\nMOV 18 SM104\n"
+                                                "LD SM0.0\nSetPAR 1 2 VW0 0 1400\nLD SM0.0\n"
+                                                "PosPAR 1 4 10 0\nEND\n"),
+                                 rung::testing::pl110());
+    EXPECT_TRUE(r.passed()) << why(r);
+}
+
 // A key the panel does not have, a PLC without keys and a press that names more than a key are
 // errors with their lines, the keys listed.
 TEST(Scenario, PressErrorsNameTheKeys) {
