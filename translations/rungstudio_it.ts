@@ -855,7 +855,7 @@ PLC dopo il riavvio di serve</translation>
         <location line="-160"/>
         <location line="+161"/>
         <source>Scan Debugger</source>
-        <translation>Debugger della scansione</translation>
+        <translation>Debug scansione</translation>
     </message>
     <message>
         <location line="-98"/>
@@ -2508,7 +2508,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
     <message>
         <location line="+14"/>
         <source>Scan Debugger</source>
-        <translation>Debugger della scansione</translation>
+        <translation>Debug scansione</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3809,7 +3809,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
     <message>
         <location line="+1"/>
         <source>Network Watch</source>
-        <translation>Osservazione della rete</translation>
+        <translation>Osservazione rete</translation>
     </message>
     <message>
         <location line="+2"/>

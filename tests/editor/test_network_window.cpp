@@ -23,6 +23,7 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QSignalSpy>
+#include <QTabBar>
 #include <QTableView>
 
 #include <map>
@@ -372,6 +373,35 @@ TEST(NetworkWindow, AStationsProgramOpensInTheMainWindowForEditing) {
     emit net->openProgramRequested(
         net->session()->station(QStringLiteral("master"))->programPath());
     EXPECT_TRUE(window.document()->listingText().contains(QStringLiteral("LINK D1000 D100")));
+}
+
+// The docks' tabs read whole in every language on a 1366 x 768 screen (the window as it opens
+// there, 1280 x 740): Italian's "Osservazione della rete" and "Debugger della scansione" were
+// cut to "Osservazione dell..." beside each other.
+TEST(NetworkWindow, TheDocksTabsReadWholeInEveryLanguage) {
+    for (const char *language : {"en", "hu", "it"}) {
+        SCOPED_TRACE(language);
+        ASSERT_TRUE(app::setLanguage(QString::fromLatin1(language), false));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        app::MainWindow window;
+        ASSERT_TRUE(window.openFile(example("cpm1-host-link"), QString(), true));
+        app::NetworkWindow *net = openedNetwork(window);
+        ASSERT_NE(net, nullptr);
+        net->resize(1280, 740);
+        net->show();
+        QCoreApplication::processEvents();
+        int tabs = 0;
+        for (const QTabBar *bar : net->findChildren<QTabBar *>()) {
+            if (!bar->isVisible())
+                continue;
+            for (int i = 0; i < bar->count(); ++i, ++tabs) {
+                const int text = bar->fontMetrics().horizontalAdvance(bar->tabText(i));
+                EXPECT_GE(bar->tabRect(i).width(), text + 8) << bar->tabText(i).toStdString();
+            }
+        }
+        EXPECT_GE(tabs, 4) << "the dock tabs were found";
+    }
+    ASSERT_TRUE(app::setLanguage(QStringLiteral("en"), false));
 }
 
 } // namespace
