@@ -9805,14 +9805,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+204"/>
+        <location filename="../model/target/target_pl110.cpp" line="+199"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-462"/>
+        <location filename="../model/target/target_pl110.cpp" line="-457"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -10302,17 +10302,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Érték konvertálása</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+26"/>
         <source>field (1..4)</source>
         <translation>mező (1..4)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+14"/>
         <source>state (0 disabled, 1 shown, 2 editable)</source>
         <translation>állapot (0 tiltott, 1 megjelenített, 2 módosítható)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-8"/>
         <source>variable shown</source>
         <translation>megjelenített változó</translation>
     </message>
@@ -10327,52 +10327,52 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>maximum</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>Set a display field: its state, variable and limits</source>
         <translation>Kijelzőmező beállítása: állapota, változója és határai</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>type (0 16 bit signed, 1 16 bit unsigned, 2 32 bit signed)</source>
         <translation>típus (0 16 bites előjeles, 1 16 bites előjel nélküli, 2 32 bites előjeles)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
         <source>total digits</source>
         <translation>számjegyek összesen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
         <source>decimals</source>
         <translation>tizedesjegyek</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>fill (0 spaces, 1 zeros)</source>
         <translation>kitöltés (0 szóközök, 1 nullák)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Format a display field: type, digits, decimals, fill</source>
         <translation>Kijelzőmező formátuma: típus, számjegyek, tizedesjegyek, kitöltés</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>row (1..8)</source>
         <translation>sor (1..8)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
         <source>column (1..22)</source>
         <translation>oszlop (1..22)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>access (0 free, 1 password)</source>
         <translation>hozzáférés (0 szabad, 1 jelszóval)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>Place a display field: row, column and access</source>
         <translation>Kijelzőmező elhelyezése: sor, oszlop és hozzáférés</translation>
     </message>
@@ -11174,7 +11174,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>csökkenti a módosítás alatt álló mezőt</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-89"/>
+        <location filename="../model/target/target_pl110.cpp" line="-84"/>
         <source>characters per word</source>
         <translation>karakter szavanként</translation>
     </message>

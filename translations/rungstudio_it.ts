@@ -9828,14 +9828,14 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+204"/>
+        <location filename="../model/target/target_pl110.cpp" line="+199"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-462"/>
+        <location filename="../model/target/target_pl110.cpp" line="-457"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -10325,17 +10325,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Converte un valore</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+26"/>
         <source>field (1..4)</source>
         <translation>campo (1..4)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+14"/>
         <source>state (0 disabled, 1 shown, 2 editable)</source>
         <translation>stato (0 disabilitato, 1 visualizzato, 2 modificabile)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-8"/>
         <source>variable shown</source>
         <translation>variabile visualizzata</translation>
     </message>
@@ -10350,52 +10350,52 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>massimo</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>Set a display field: its state, variable and limits</source>
         <translation>Imposta un campo del display: stato, variabile e limiti</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>type (0 16 bit signed, 1 16 bit unsigned, 2 32 bit signed)</source>
         <translation>tipo (0 16 bit con segno, 1 16 bit senza segno, 2 32 bit con segno)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
         <source>total digits</source>
         <translation>numero totale di cifre</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
         <source>decimals</source>
         <translation>cifre decimali</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>fill (0 spaces, 1 zeros)</source>
         <translation>riempimento (0 spazi, 1 zeri)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Format a display field: type, digits, decimals, fill</source>
         <translation>Formatta un campo del display: tipo, cifre, decimali, riempimento</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>row (1..8)</source>
         <translation>riga (1..8)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
         <source>column (1..22)</source>
         <translation>colonna (1..22)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>access (0 free, 1 password)</source>
         <translation>accesso (0 libero, 1 con password)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>Place a display field: row, column and access</source>
         <translation>Posiziona un campo del display: riga, colonna e accesso</translation>
     </message>
@@ -11197,7 +11197,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>decrementa il campo in modifica</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-89"/>
+        <location filename="../model/target/target_pl110.cpp" line="-84"/>
         <source>characters per word</source>
         <translation>caratteri per word</translation>
     </message>

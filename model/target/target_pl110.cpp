@@ -444,16 +444,23 @@ Target makePl110Target() {
     // editable; 0 16 bit signed, 1 16 bit unsigned, 2 32 bit signed; 0 spaces, 1 zeros; 0 free,
     // 1 after the user password) *(choice: PLProg's boxes show them as words, the listing is
     // the product's)*. The variable and a variable limit are of the areas of SM107's list.
-    OperandSpec field{K::Constant};
-    field.lowest = 1;
-    field.highest = 4;
-    field.name = QT_TRANSLATE_NOOP("rung::model::Target", "field (1..4)");
+    const auto ranged = [](int lowest, int highest, const char *name) {
+        OperandSpec o{K::Constant};
+        o.lowest = lowest;
+        o.highest = highest;
+        o.name = name;
+        return o;
+    };
+    const auto oneOf = [](std::vector<int> values, const char *name) {
+        OperandSpec o{K::Constant};
+        o.allowedValues = std::move(values);
+        o.name = name;
+        return o;
+    };
+    const OperandSpec field =
+        ranged(1, 4, QT_TRANSLATE_NOOP("rung::model::Target", "field (1..4)"));
     const std::vector<const char *> listed = {"V",  "SM", "VD", "SMD", "AI",  "TR",  "AQ",
                                               "PT", "PV", "T",  "C",   "EEP", "MMC", "DISP"};
-    OperandSpec state{K::Constant};
-    state.allowedValues = {0, 1, 2};
-    state.name =
-        QT_TRANSLATE_NOOP("rung::model::Target", "state (0 disabled, 1 shown, 2 editable)");
     OperandSpec variable{K::WordSource};
     variable.deviceOnly = true;
     variable.sourceAreas = listed;
@@ -463,42 +470,30 @@ Target makePl110Target() {
     lowest.name = QT_TRANSLATE_NOOP("rung::model::Target", "minimum");
     OperandSpec highest = lowest;
     highest.name = QT_TRANSLATE_NOOP("rung::model::Target", "maximum");
-    addBox(t, "SetPAR", ApplyFunction::PanelFieldSet, {field, state, variable, lowest, highest},
+    addBox(t, "SetPAR", ApplyFunction::PanelFieldSet,
+           {field,
+            oneOf({0, 1, 2}, QT_TRANSLATE_NOOP("rung::model::Target",
+                                               "state (0 disabled, 1 shown, 2 editable)")),
+            variable, lowest, highest},
            QT_TRANSLATE_NOOP("rung::model::Target",
                              "Set a display field: its state, variable and limits"),
            "N STATE VAR MIN MAX");
-    OperandSpec type{K::Constant};
-    type.allowedValues = {0, 1, 2};
-    type.name = QT_TRANSLATE_NOOP("rung::model::Target",
-                                  "type (0 16 bit signed, 1 16 bit unsigned, 2 32 bit signed)");
-    OperandSpec digits{K::Constant};
-    digits.lowest = 1;
-    digits.highest = 12;
-    digits.name = QT_TRANSLATE_NOOP("rung::model::Target", "total digits");
-    OperandSpec decimals{K::Constant};
-    decimals.lowest = 0;
-    decimals.highest = 10;
-    decimals.name = QT_TRANSLATE_NOOP("rung::model::Target", "decimals");
-    OperandSpec fill{K::Constant};
-    fill.allowedValues = {0, 1};
-    fill.name = QT_TRANSLATE_NOOP("rung::model::Target", "fill (0 spaces, 1 zeros)");
-    addBox(t, "FormatPAR", ApplyFunction::PanelFieldFormat, {field, type, digits, decimals, fill},
+    addBox(t, "FormatPAR", ApplyFunction::PanelFieldFormat,
+           {field,
+            oneOf({0, 1, 2},
+                  QT_TRANSLATE_NOOP("rung::model::Target", "type (0 16 bit signed, 1 16 "
+                                                           "bit unsigned, 2 32 bit signed)")),
+            ranged(1, 12, QT_TRANSLATE_NOOP("rung::model::Target", "total digits")),
+            ranged(0, 10, QT_TRANSLATE_NOOP("rung::model::Target", "decimals")),
+            oneOf({0, 1}, QT_TRANSLATE_NOOP("rung::model::Target", "fill (0 spaces, 1 zeros)"))},
            QT_TRANSLATE_NOOP("rung::model::Target",
                              "Format a display field: type, digits, decimals, fill"),
            "N TYPE DIGITS DECIMALS FILL");
-    OperandSpec row{K::Constant};
-    row.lowest = 1;
-    row.highest = 8;
-    row.name = QT_TRANSLATE_NOOP("rung::model::Target", "row (1..8)");
-    OperandSpec column{K::Constant};
-    column.lowest = 1;
-    column.highest = 22;
-    column.name = QT_TRANSLATE_NOOP("rung::model::Target", "column (1..22)");
-    OperandSpec access{K::Constant};
-    access.allowedValues = {0, 1};
-    access.name = QT_TRANSLATE_NOOP("rung::model::Target", "access (0 free, 1 password)");
     addBox(
-        t, "PosPAR", ApplyFunction::PanelFieldPosition, {field, row, column, access},
+        t, "PosPAR", ApplyFunction::PanelFieldPosition,
+        {field, ranged(1, 8, QT_TRANSLATE_NOOP("rung::model::Target", "row (1..8)")),
+         ranged(1, 22, QT_TRANSLATE_NOOP("rung::model::Target", "column (1..22)")),
+         oneOf({0, 1}, QT_TRANSLATE_NOOP("rung::model::Target", "access (0 free, 1 password)"))},
         QT_TRANSLATE_NOOP("rung::model::Target", "Place a display field: row, column and access"),
         "N ROW COLUMN ACCESS");
     addSpec(t, "END", Op::End, {}, QT_TRANSLATE_NOOP("rung::model::Target", "End of the program"));
