@@ -117,8 +117,11 @@ void NetworkSession::recordScan(Network &network, StationSource &source, const S
     bool stop = false;
     {
         std::lock_guard lock(source.m_historyMutex);
-        if (source.m_history.deviceCount() == 0 ||
-            !source.m_history.record(scan, timeMs, engine.words().data()))
+        if (source.m_history.deviceCount() == 0) {
+            source.m_history.scannedUnrecorded();
+            return;
+        }
+        if (!source.m_history.record(scan, timeMs, engine.words().data()))
             return;
         stop = source.m_history.trigger()->action == model::Trigger::Action::Stop;
     }

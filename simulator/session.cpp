@@ -196,8 +196,11 @@ std::optional<SimulatorSession::Fired> SimulatorSession::recordHistory(const Eng
     Fired fired;
     {
         std::lock_guard lock(m_historyMutex);
-        if (m_history.deviceCount() == 0 ||
-            !m_history.record(engine.statistics().scans, engine.statistics().timeMs,
+        if (m_history.deviceCount() == 0) {
+            m_history.scannedUnrecorded();
+            return std::nullopt;
+        }
+        if (!m_history.record(engine.statistics().scans, engine.statistics().timeMs,
                               engine.words().data()))
             return std::nullopt;
         fired.stop = m_history.trigger()->action == model::Trigger::Action::Stop;

@@ -3,6 +3,7 @@
 #include "app/gui/network_watch_model.h"
 #include "app/gui/simulation_controller.h"
 #include "editor/timing_canvas.h"
+#include "model/image/trigger.h"
 #include "model/target/address.h"
 #include "model/target/target_lists.h"
 #include "network/network_session.h"
@@ -126,8 +127,12 @@ void NetworkChart::retranslate() {
 }
 
 void NetworkChart::showTrigger(const QString &condition, model::Trigger::Action action) {
-    m_armed = condition;
     const bool stop = action == model::Trigger::Action::Stop;
+    const bool changed = condition != m_armed || stop != m_armedStops;
+    m_armed = condition;
+    m_armedStops = stop;
+    if (changed)
+        readPastMarks();
     {
         const QSignalBlocker block(m_arm);
         m_arm->setChecked(!condition.isEmpty());
@@ -287,6 +292,38 @@ void NetworkChart::readPast(std::size_t row, qint64 recorderFromMs) {
     past.throughMs = newest.timeMs;
 }
 
+void NetworkChart::readPastMarks() {
+    m_pastMarks.clear();
+    if (m_armedStops)
+        return; // only a marking trigger marks the past, as one program's chart does
+    const qsizetype slash = m_armed.indexOf(QLatin1Char('/'));
+    network::StationSource *station =
+        m_session && slash > 0 ? m_session->station(m_armed.left(slash).trimmed()) : nullptr;
+    const std::shared_ptr<const network::NetworkHistory> history =
+        m_session ? m_session->history() : nullptr;
+    if (!station || !history)
+        return;
+    m_pastMarksGeneration = history->generation();
+    const auto parsed =
+        model::parseTrigger(station->target(), m_armed.mid(slash + 1).trimmed(), station->model());
+    const auto *trigger = std::get_if<model::Trigger>(&parsed);
+    const auto &all = m_session->stations();
+    const auto index =
+        static_cast<std::size_t>(std::find(all.begin(), all.end(), station) - all.begin());
+    if (!trigger || index >= all.size())
+        return;
+    station->readHistory([&](const model::HistoryRecorder &h) {
+        const int word = h.wordOf(trigger->device);
+        if (word < 0)
+            return;
+        const auto values = history->wordValues(index, static_cast<std::size_t>(word), -1);
+        for (std::size_t k = 1; k < values.size(); ++k)
+            if (trigger->fires(h.valueIn(trigger->device, values[k - 1].value),
+                               h.valueIn(trigger->device, values[k].value)))
+                m_pastMarks.push_back({values[k].scans, values[k].timeMs});
+    });
+}
+
 void NetworkChart::refresh() {
     const qint64 now = m_session ? m_session->nowUs() / 1000 : 0;
     if (m_follow->isChecked())
@@ -326,13 +363,22 @@ void NetworkChart::refresh() {
         window.changes.push_back(std::move(changes));
         window.knownFromMs.push_back(knownFromMs);
     }
-    // The moments the trigger became true, from its station's history.
+    // The moments the trigger became true: before it was armed from the network's history,
+    // since from its station's recorder.
     const qsizetype slash = m_armed.indexOf(QLatin1Char('/'));
+    const std::shared_ptr<const network::NetworkHistory> history =
+        m_session ? m_session->history() : nullptr;
+    if (history && history->generation() != m_pastMarksGeneration)
+        m_pastMarks.clear(); // the network started again
+    for (const auto &m : m_pastMarks)
+        if (m.timeMs >= window.fromMs && m.timeMs <= window.toMs)
+            window.marks.push_back(m);
     if (network::StationSource *station =
             m_session && slash > 0 ? m_session->station(m_armed.left(slash).trimmed()) : nullptr)
         station->readHistory([&](const model::HistoryRecorder &h) {
             for (const auto &m : h.marks())
-                if (m.timeMs >= window.fromMs && m.timeMs <= window.toMs)
+                if (m.timeMs >= window.fromMs && m.timeMs <= window.toMs &&
+                    (m_pastMarks.empty() || m.timeMs > m_pastMarks.back().timeMs))
                     window.marks.push_back(m);
         });
     m_window = window;

@@ -90,6 +90,10 @@ private:
         std::vector<model::HistoryRecorder::Change> changes;
     };
     void readPast(std::size_t row, qint64 recorderFromMs);
+    // The moments the armed condition became true before it was armed, read from the
+    // network's history (the recorder marks those after): a marking trigger armed after the
+    // fact marks what already happened too, at the history's slices.
+    void readPastMarks();
 
     QPointer<network::NetworkSession> m_session;
     std::vector<model::TimingChannel> m_channels; // device "s5/D10"
@@ -103,7 +107,10 @@ private:
     QComboBox *m_triggerAction;
     QPushButton *m_arm;
     QLabel *m_readout;
-    QString m_armed;         // the condition armed ("" none)
+    QString m_armed; // the condition armed ("" none)
+    bool m_armedStops = true;
+    std::vector<model::HistoryRecorder::Mark> m_pastMarks; // readPastMarks()
+    std::uint64_t m_pastMarksGeneration = 0;
     QString m_triggerStatus; // "Armed: ...", or when it became true
     double m_msPerPixel = 10.0;
     qint64 m_endMs = 0;

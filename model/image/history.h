@@ -57,6 +57,9 @@ public:
     // the next change into the condition, not because the condition already holds; after
     // clear() (power-on, every device 0) a condition that holds at the first record fires.
     bool setTrigger(std::optional<Trigger> trigger);
+    // A scan ran that was not recorded (nothing watched): a trigger armed after it is armed
+    // on a running PLC, not at power-on.
+    void scannedUnrecorded() { m_recorded = true; }
     const std::optional<Trigger> &trigger() const { return m_trigger; }
     struct Mark {
         quint64 scan = 0;

@@ -394,6 +394,40 @@ TEST(NetworkDebug, TheTimingChartsTriggerStopsTheWholeNetworkAndSaysWhichStation
     EXPECT_FALSE(held->isVisibleTo(net));
 }
 
+// A trigger armed after the fact marks what already happened too: the moments the network's
+// history saw the condition become true (the 1 s clock M9013 rising after the first scan and
+// each second: 10 ms, 1.01 s, 2.01 s, 3.01 s in 3.2 s), and from then on those its station's
+// recorder marks (4.01 s), none twice, and not the clock already ON when it was armed.
+TEST(NetworkDebug, OnlyMarkArmedAfterTheFactMarksThePastMomentsToo) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(kCpuLink, QString(), true));
+    app::NetworkWindow *net = debuggedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    network::NetworkSession *session = net->session();
+    app::NetworkChart *chart = net->chart();
+    session->setSpeed(0);
+    session->runFor(3200);
+    ASSERT_TRUE(eventually([&] { return session->runState() == RunState::Paused; }));
+    ASSERT_EQ(session->nowUs(), 3'200'000);
+    chart->triggerField()->setText(QStringLiteral("master/M9013 rises"));
+    chart->triggerAction()->setCurrentIndex(1); // Only mark
+    chart->armButton()->click();
+    ASSERT_TRUE(chart->armButton()->isChecked());
+    EXPECT_TRUE(eventually([&] { return chart->window().marks.size() == 4; }))
+        << chart->window().marks.size();
+    for (const auto &m : chart->window().marks)
+        EXPECT_LT(m.timeMs, 3200);
+    // Run on a second: the recorder's one more, the past ones not again.
+    session->runFor(1000);
+    ASSERT_TRUE(eventually([&] { return session->runState() == RunState::Paused; }));
+    EXPECT_TRUE(eventually([&] { return chart->window().marks.size() == 5; }))
+        << chart->window().marks.size();
+    // Disarmed: no marks of a condition no longer watched from the past either.
+    chart->armButton()->click();
+    EXPECT_FALSE(chart->armButton()->isChecked());
+    EXPECT_TRUE(eventually([&] { return chart->window().marks.empty(); }));
+}
+
 // The debugging entries of both Simulation menus come from one table (debug_entries.h): the
 // same text, access key, key and tooltip in the main window and the network window, in every
 // language, each translated once.

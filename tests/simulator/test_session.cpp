@@ -370,6 +370,33 @@ TEST(SimulatorSession, AStoppingTriggerPausesAtTheScanWhereItBecameTrue) {
     EXPECT_EQ(fired.count(), 1);
 }
 
+// A trigger armed on a running PLC whose history watched nothing so far (no scan recorded):
+// a condition that already holds is not "becoming true" at the next scan; the next rise is.
+TEST(SimulatorSession, ATriggerArmedAfterUnrecordedScansFiresOnTheNextRiseOnly) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    model::MonitorSource &source = *f.session;
+    EXPECT_TRUE(f.finish(source.writeBit(f.at("X0"), true)).first);
+    for (int k = 0; k < 3; ++k) {
+        const quint64 before = f.latest()->statistics.scans;
+        f.session->singleScan();
+        ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == before + 1; }));
+    }
+    auto trigger =
+        std::get<model::Trigger>(model::parseTrigger(f.sim.target, QStringLiteral("Y0 rises")));
+    trigger.action = model::Trigger::Action::Mark;
+    ASSERT_TRUE(source.setTrigger(trigger)); // Y0 is ON already
+    QSignalSpy fired(&source, &model::MonitorSource::triggered);
+    for (const bool on : {true, false, true}) {
+        EXPECT_TRUE(f.finish(source.writeBit(f.at("X0"), on)).first);
+        const quint64 before = f.latest()->statistics.scans;
+        f.session->singleScan();
+        ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == before + 1; }));
+    }
+    ASSERT_TRUE(eventually([&] { return fired.count() == 1; }));
+    EXPECT_EQ(fired.at(0).at(0).toULongLong(), 6u) << "the rise at scan 6, not scan 4";
+    EXPECT_TRUE(source.setTrigger(std::nullopt));
+}
+
 TEST(SimulatorSession, AMarkingTriggerNotesEveryRiseAndKeepsRunning) {
     // Y0 follows X0; X0 pulsed twice by single scans: two marks, never paused by them.
     SessionFixture f("LD X0\nOUT Y0\nEND");
