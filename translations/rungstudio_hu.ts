@@ -2381,7 +2381,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+106"/>
+        <location filename="../app/gui/network_chart.cpp" line="+107"/>
         <source>Follow</source>
         <translation>Követés</translation>
     </message>
@@ -2431,7 +2431,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A trigger figyelése (a mezőben az Enter ugyanezt teszi)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>Armed: stops the network when %1</source>
         <translation>Élesítve: a hálózat megáll, ha %1</translation>
     </message>
@@ -2462,7 +2462,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 nem őrzi %2 előzményeit</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+160"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -10302,12 +10302,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Érték konvertálása</translation>
     </message>
     <message>
-        <location line="+26"/>
-        <source>field (1..4)</source>
-        <translation>mező (1..4)</translation>
+        <location line="+59"/>
+        <source>row</source>
+        <translation>sor</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+1"/>
+        <source>column</source>
+        <translation>oszlop</translation>
+    </message>
+    <message>
+        <location line="-20"/>
         <source>state (0 disabled, 1 shown, 2 editable)</source>
         <translation>állapot (0 tiltott, 1 megjelenített, 2 módosítható)</translation>
     </message>
@@ -10317,7 +10322,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>megjelenített változó</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-6"/>
+        <source>display field</source>
+        <translation>kijelzőmező</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>minimum</source>
         <translation>minimum</translation>
     </message>
@@ -10357,17 +10367,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kijelzőmező formátuma: típus, számjegyek, tizedesjegyek, kitöltés</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>row (1..8)</source>
-        <translation>sor (1..8)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>column (1..22)</source>
-        <translation>oszlop (1..22)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>access (0 free, 1 password)</source>
         <translation>hozzáférés (0 szabad, 1 jelszóval)</translation>
     </message>
@@ -12819,7 +12819,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+243"/>
+        <location filename="../simulator/session.cpp" line="+246"/>
         <source>Line %1: %2</source>
         <translation>%1. sor: %2</translation>
     </message>

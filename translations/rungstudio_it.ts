@@ -2388,7 +2388,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkChart</name>
     <message>
-        <location filename="../app/gui/network_chart.cpp" line="+106"/>
+        <location filename="../app/gui/network_chart.cpp" line="+107"/>
         <source>Follow</source>
         <translation>Segui</translation>
     </message>
@@ -2438,7 +2438,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Attende il trigger (Invio nel suo campo fa lo stesso)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>Armed: stops the network when %1</source>
         <translation>Armato: la rete si ferma quando %1</translation>
     </message>
@@ -2469,7 +2469,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 non conserva la storia di %2</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+160"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -10325,12 +10325,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Converte un valore</translation>
     </message>
     <message>
-        <location line="+26"/>
-        <source>field (1..4)</source>
-        <translation>campo (1..4)</translation>
+        <location line="+59"/>
+        <source>row</source>
+        <translation>riga</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+1"/>
+        <source>column</source>
+        <translation>colonna</translation>
+    </message>
+    <message>
+        <location line="-20"/>
         <source>state (0 disabled, 1 shown, 2 editable)</source>
         <translation>stato (0 disabilitato, 1 visualizzato, 2 modificabile)</translation>
     </message>
@@ -10340,7 +10345,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>variabile visualizzata</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-6"/>
+        <source>display field</source>
+        <translation>campo del display</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>minimum</source>
         <translation>minimo</translation>
     </message>
@@ -10380,17 +10390,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Formatta un campo del display: tipo, cifre, decimali, riempimento</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>row (1..8)</source>
-        <translation>riga (1..8)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>column (1..22)</source>
-        <translation>colonna (1..22)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>access (0 free, 1 password)</source>
         <translation>accesso (0 libero, 1 con password)</translation>
     </message>
@@ -12844,7 +12844,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+243"/>
+        <location filename="../simulator/session.cpp" line="+246"/>
         <source>Line %1: %2</source>
         <translation>Riga %1: %2</translation>
     </message>

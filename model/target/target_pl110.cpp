@@ -458,7 +458,7 @@ Target makePl110Target() {
         return o;
     };
     const OperandSpec field =
-        ranged(1, 4, QT_TRANSLATE_NOOP("rung::model::Target", "field (1..4)"));
+        ranged(1, 4, QT_TRANSLATE_NOOP("rung::model::Target", "display field"));
     const std::vector<const char *> listed = {"V",  "SM", "VD", "SMD", "AI",  "TR",  "AQ",
                                               "PT", "PV", "T",  "C",   "EEP", "MMC", "DISP"};
     OperandSpec variable{K::WordSource};
@@ -491,8 +491,8 @@ Target makePl110Target() {
            "N TYPE DIGITS DECIMALS FILL");
     addBox(
         t, "PosPAR", ApplyFunction::PanelFieldPosition,
-        {field, ranged(1, 8, QT_TRANSLATE_NOOP("rung::model::Target", "row (1..8)")),
-         ranged(1, 22, QT_TRANSLATE_NOOP("rung::model::Target", "column (1..22)")),
+        {field, ranged(1, 8, QT_TRANSLATE_NOOP("rung::model::Target", "row")),
+         ranged(1, 22, QT_TRANSLATE_NOOP("rung::model::Target", "column")),
          oneOf({0, 1}, QT_TRANSLATE_NOOP("rung::model::Target", "access (0 free, 1 password)"))},
         QT_TRANSLATE_NOOP("rung::model::Target", "Place a display field: row, column and access"),
         "N ROW COLUMN ACCESS");

@@ -6,7 +6,10 @@
 #include "tests/model/random_program.h"
 
 #include "model/listing/il.h"
+#include "model/project/project.h"
 #include "simulator/compiler.h"
+
+#include <QDirIterator>
 
 #include <gtest/gtest.h>
 
@@ -54,6 +57,32 @@ template <class Check> void forEachRandomProgram(int seeds, int rungs, Check &&c
             check(t, parsed.list, compiled, static_cast<unsigned>(seed));
         }
     }
+}
+
+// Every example project (resources/examples), its ladder as a listing, compiled (a failure
+// fails the test); check(target, list, compiled) for each. Returns how many there were.
+template <class Check> int forEachExampleProgram(Check &&check) {
+    QDirIterator it(QStringLiteral(RUNG_SOURCE_DIR "/resources/examples"),
+                    {QStringLiteral("*.rung")}, QDir::Files, QDirIterator::Subdirectories);
+    int examples = 0;
+    while (it.hasNext()) {
+        const QString path = it.next();
+        SCOPED_TRACE(path.toStdString());
+        model::ProjectError error;
+        const auto project = model::loadProject(path, &error);
+        EXPECT_TRUE(project) << error.message.toStdString();
+        if (!project)
+            continue;
+        const model::ToListingResult listing = model::ladderToList(project->program);
+        EXPECT_TRUE(listing.ok());
+        const CompileResult compiled = compileProgram(listing.list);
+        EXPECT_TRUE(compiled.ok());
+        if (!listing.ok() || !compiled.ok())
+            continue;
+        check(*project->target, listing.list, compiled);
+        ++examples;
+    }
+    return examples;
 }
 
 } // namespace rung::simulator::test

@@ -300,24 +300,12 @@ TEST(FastLoop, ATimerWhoseSetValueWasLoweredOnlineScansAsTheFullInterpreter) {
 }
 
 TEST(FastLoop, EveryExampleProjectScansAsTheFullInterpreter) {
-    QDirIterator it(QStringLiteral(RUNG_SOURCE_DIR "/resources/examples"),
-                    {QStringLiteral("*.rung")}, QDir::Files, QDirIterator::Subdirectories);
-    int examples = 0;
-    while (it.hasNext()) {
-        const QString path = it.next();
-        SCOPED_TRACE(path.toStdString());
-        model::ProjectError error;
-        const auto project = model::loadProject(path, &error);
-        ASSERT_TRUE(project) << error.message.toStdString();
-        const model::ToListingResult listing = model::ladderToList(project->program);
-        ASSERT_TRUE(listing.ok());
-        const CompileResult compiled = compileProgram(listing.list);
-        ASSERT_TRUE(compiled.ok());
-        std::vector<model::Address> written;
-        const auto inputs = test::inputsOf(*project->target, listing.list, &written);
-        expectSameScans(compiled.program, inputs, written, 400, 11);
-        ++examples;
-    }
+    const int examples = test::forEachExampleProgram(
+        [](const model::Target &t, const model::InstructionList &list, const CompileResult &c) {
+            std::vector<model::Address> written;
+            const auto inputs = test::inputsOf(t, list, &written);
+            expectSameScans(c.program, inputs, written, 400, 11);
+        });
     EXPECT_GE(examples, 10);
 }
 

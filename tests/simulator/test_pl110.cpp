@@ -679,8 +679,15 @@ TEST(Pl110Terminal, SetParFormatParAndPosParWriteTheFieldsWords) {
 // A field the display does not have, and a variable that is not in SM107's list, do not
 // compile; the table's ranges are `check`'s.
 TEST(Pl110Terminal, SetParRefusesWhatTheFieldCannotHold) {
+    const auto firstMessage = [](const Pl110 &s) {
+        return s.result.diagnostics.empty() ? std::string()
+                                            : s.result.diagnostics.front().message.toStdString();
+    };
     Pl110 bit("LD I1\nSetPAR 1 2 Q1 0 10\nEND");
     EXPECT_FALSE(bit.result.ok());
+    EXPECT_NE(firstMessage(bit).find("not Q1"), std::string::npos) << firstMessage(bit);
     Pl110 row("LD I1\nPosPAR 1 9 10 0\nEND");
     EXPECT_FALSE(row.result.ok());
+    EXPECT_NE(firstMessage(row).find("row of PosPAR must be from 1 to 8, not 9"), std::string::npos)
+        << firstMessage(row);
 }

@@ -117,24 +117,11 @@ TEST(ScanWrites, EveryWordAManualsExampleChangesIsAmongThem) {
 }
 
 TEST(ScanWrites, EveryWordAnExampleProjectChangesIsAmongThem) {
-    QDirIterator it(QStringLiteral(RUNG_SOURCE_DIR "/resources/examples"),
-                    {QStringLiteral("*.rung")}, QDir::Files, QDirIterator::Subdirectories);
-    int examples = 0;
     std::size_t changed = 0;
-    while (it.hasNext()) {
-        const QString path = it.next();
-        SCOPED_TRACE(path.toStdString());
-        model::ProjectError error;
-        const auto project = model::loadProject(path, &error);
-        ASSERT_TRUE(project) << error.message.toStdString();
-        const model::ToListingResult listing = model::ladderToList(project->program);
-        ASSERT_TRUE(listing.ok());
-        const CompileResult compiled = compileProgram(listing.list);
-        ASSERT_TRUE(compiled.ok());
-        changed += expectScansWriteOnlyTheirWords(
-            compiled.program, test::inputsOf(*project->target, listing.list), 400, 11);
-        ++examples;
-    }
+    const int examples = test::forEachExampleProgram(
+        [&](const model::Target &t, const model::InstructionList &list, const CompileResult &c) {
+            changed += expectScansWriteOnlyTheirWords(c.program, test::inputsOf(t, list), 400, 11);
+        });
     EXPECT_GE(examples, 10);
     EXPECT_GT(changed, 100u);
 }
